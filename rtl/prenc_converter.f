@@ -1,0 +1,2 @@
+// Sources of prenc_converter, relative to this folder (verilator -F, or -f from rtl/).
+prenc_converter.v

@@ -1,0 +1,106 @@
+// prenc_converter: parallel lookup converter, code word -> absolute slot.
+//
+// A registered ROM read: the N-bit code word w(p) presented with word_valid on
+// one clock gives its slot p on pos with pos_valid on the next (latency 1 clock,
+// whatever N), where a serial converter steps the LFSR law up to 2^N - 1 times.
+// The table (address w(p), data p) comes from `prenc rom --format hex`; it maps to
+// block RAM in synthesis (registered read, no reset on the data register).
+//
+// Parameters
+//   N         code word length, 2..24 (2^N words of N bits)
+//   ROM_FILE  $readmemh file with exactly 2^N words; a missing or short file stops
+//             simulation at time 0 with a message, and stops Yosys too.
+//
+// Ports
+//   clk, rst     one clock; synchronous active-high reset (clears pos_valid only)
+//   word_valid   word holds a code word to convert
+//   word         code word w(p), s(p) in the MSB
+//   pos_valid    pos holds the slot of the word presented one clock earlier
+//   pos          slot p; holds its value while pos_valid is low
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_converter #(
+  parameter integer N        = 10,
+  parameter         ROM_FILE = "prenc_rom_n10.hex"
+) (
+  input  wire         clk,
+  input  wire         rst,
+  input  wire         word_valid,
+  input  wire [N-1:0] word,
+  output wire         pos_valid,
+  output wire [N-1:0] pos
+);
+
+  localparam integer DEPTH = 1 << N;
+
+  // Illegal parameters stop elaboration in Verilator, Icarus and Yosys alike: the
+  // missing module below names the problem; Yosys also prints the $display.
+  generate
+    if (N < 2 || N > 24) begin : g_bad_n
+      initial $display("ERROR: %m: parameter N = %0d is out of range 2..24", N);
+      prenc_converter_parameter_N_out_of_range_2_to_24 u_stop ();
+    end
+  endgenerate
+
+  reg [N-1:0] rom [0:DEPTH-1];
+  initial $readmemh(ROM_FILE, rom);
+
+  reg [N-1:0] pos_reg;
+  reg         pos_valid_reg;
+
+  always @(posedge clk) begin
+    if (word_valid) begin
+      pos_reg <= rom[word];
+    end
+  end
+
+  always @(posedge clk) begin
+    pos_valid_reg <= word_valid;
+    if (rst) begin
+      pos_valid_reg <= 1'b0;
+    end
+  end
+
+  assign pos       = pos_reg;
+  assign pos_valid = pos_valid_reg;
+
+`ifndef SYNTHESIS
+  // A missing ROM file must not become an all-X or all-zero ROM. Load the file a
+  // second time into a one-bit-wider copy preset to a marker value that no N-bit
+  // word can have; any marker left over is a word the file did not supply.
+  reg     [N:0] rom_check [0:DEPTH-1];
+  integer       check_fd;
+  integer       check_i;
+  integer       check_missing;
+
+  initial begin
+    check_fd = $fopen(ROM_FILE, "r");
+    if (check_fd == 0) begin
+      $display("ERROR: %m: ROM_FILE \"%0s\" cannot be opened", ROM_FILE);
+      $finish;
+    end
+    $fclose(check_fd);
+    for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
+      rom_check[check_i] = {1'b1, {N{1'b0}}};
+    end
+    $readmemh(ROM_FILE, rom_check);
+    check_missing = 0;
+    for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
+      if (rom_check[check_i][N]) begin
+        check_missing = check_missing + 1;
+      end
+    end
+    if (check_missing != 0) begin
+      $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than N = %0d",
+               ROM_FILE, check_missing, DEPTH, N);
+      $finish;
+    end
+  end
+`endif
+
+endmodule
+
+`resetall

@@ -1,0 +1,216 @@
+"""Faults of the datasheet as composable, seeded objects.
+
+Each fault changes the signals of an `EncoderRun` in place through `apply(run)`;
+`VirtualEncoder` applies them in the order given, so electrical effects (bounce,
+glitches) listed last act on what the optics (misreads, contamination) produced.
+The truth (`run.theta`) is never changed. Random faults take a `seed` and are
+reproducible: the same seed gives the same signals.
+
+Heads are numbered 1 and 2, tracks 1 and 2, sync signals "a" and "b".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .encoder import SIGNALS, EncoderRun
+
+
+def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
+    """Maximal runs of True in mask as (start, stop) clock ranges."""
+    edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
+    starts = np.flatnonzero(edges == 1)
+    stops = np.flatnonzero(edges == -1)
+    return list(zip(starts.tolist(), stops.tolist()))
+
+
+def _edges(signal: np.ndarray) -> np.ndarray:
+    """Clocks c at which signal[c] != signal[c - 1]."""
+    return np.flatnonzero(signal[1:] != signal[:-1]) + 1
+
+
+def _head_key(head: int) -> str:
+    if head not in (1, 2):
+        raise ValueError(f"head must be 1 or 2, got {head!r}")
+    return f"head{head}"
+
+
+def _signal_key(signal: str) -> str:
+    if signal not in SIGNALS:
+        raise ValueError(f"signal must be one of {', '.join(SIGNALS)}, got {signal!r}")
+    return signal
+
+
+def _track_position(run: EncoderRun, head: int) -> np.ndarray:
+    """The track slot under a head at each clock (head 2 sits L/2 away)."""
+    offset = 0 if head == 1 else run.disc.length // 2
+    return (run.slot + offset) % run.disc.length
+
+
+@dataclass(frozen=True)
+class TransientMisread:
+    """One head reads the wrong bit during one pass over one disc slot.
+
+    A pass is a maximal run of clocks with floor(theta) mod L == slot; pass_index
+    counts them from 0 in time order. Nothing happens if there is no such pass.
+    """
+
+    head: int
+    slot: int
+    pass_index: int = 0
+
+    def apply(self, run: EncoderRun) -> None:
+        key = _head_key(self.head)
+        passes = _runs(run.slot == self.slot % run.disc.length)
+        if self.pass_index < len(passes):
+            start, stop = passes[self.pass_index]
+            run.signals[key][start:stop] ^= 1
+
+
+@dataclass(frozen=True)
+class RandomMisreads:
+    """Each pass of a head over any slot is misread with the given probability."""
+
+    head: int
+    probability: float
+    seed: int = 0
+
+    def apply(self, run: EncoderRun) -> None:
+        key = _head_key(self.head)
+        rng = np.random.default_rng(self.seed)
+        slot = run.slot
+        boundaries = np.concatenate([[0], np.flatnonzero(slot[1:] != slot[:-1]) + 1, [len(slot)]])
+        for start, stop in zip(boundaries[:-1].tolist(), boundaries[1:].tolist()):
+            if rng.random() < self.probability:
+                run.signals[key][start:stop] ^= 1
+
+
+@dataclass(frozen=True)
+class ContaminatedSlot:
+    """A spot on one track: that track slot reads inverted on every pass."""
+
+    track: int
+    slot: int
+
+    def apply(self, run: EncoderRun) -> None:
+        key = _head_key(self.track)  # head h reads track h
+        under = _track_position(run, self.track) == self.slot % run.disc.length
+        run.signals[key][under] ^= 1
+
+
+@dataclass(frozen=True)
+class DeadHead:
+    """A head stuck at 0, stuck at 1, or reading noise, from start_clock on."""
+
+    head: int
+    mode: str = "stuck0"
+    start_clock: int = 0
+    seed: int = 0
+
+    def __post_init__(self) -> None:
+        if self.mode not in ("stuck0", "stuck1", "noise"):
+            raise ValueError(f"mode must be stuck0, stuck1 or noise, got {self.mode!r}")
+
+    def apply(self, run: EncoderRun) -> None:
+        sig = run.signals[_head_key(self.head)]
+        tail = sig[self.start_clock :]
+        if self.mode == "noise":
+            tail[:] = np.random.default_rng(self.seed).integers(0, 2, len(tail), dtype=np.uint8)
+        else:
+            tail[:] = 1 if self.mode == "stuck1" else 0
+
+
+@dataclass(frozen=True)
+class Glitch:
+    """A signal inverted for `width` clocks from `clock` on."""
+
+    signal: str
+    clock: int
+    width: int = 1
+
+    def apply(self, run: EncoderRun) -> None:
+        run.signals[_signal_key(self.signal)][self.clock : self.clock + self.width] ^= 1
+
+
+@dataclass(frozen=True)
+class RandomGlitches:
+    """`count` glitches on a signal at random clocks, widths in [min_width, max_width]."""
+
+    signal: str
+    count: int
+    min_width: int = 1
+    max_width: int = 1
+    seed: int = 0
+
+    def apply(self, run: EncoderRun) -> None:
+        rng = np.random.default_rng(self.seed)
+        sig = run.signals[_signal_key(self.signal)]
+        starts = rng.integers(0, len(sig), self.count)
+        widths = rng.integers(self.min_width, self.max_width + 1, self.count)
+        for start, width in zip(starts.tolist(), widths.tolist()):
+            sig[start : start + width] ^= 1
+
+
+@dataclass(frozen=True)
+class MissedQuadratureState:
+    """The reader misses a quadrature state: A and B are seen changing together.
+
+    Takes quadrature transitions whose next transition is on the other signal and
+    holds the first edge back until the second, so the state between them never
+    shows. `index` picks the k-th such transition; otherwise `count` are drawn
+    at random with `seed`.
+    """
+
+    index: int | None = None
+    count: int = 1
+    seed: int = 0
+
+    def candidates(self, run: EncoderRun) -> list[tuple[str, int, int]]:
+        """(signal, edge clock, next edge clock of the other signal) in time order."""
+        edges = sorted(
+            [(int(c), "a") for c in _edges(run.a)] + [(int(c), "b") for c in _edges(run.b)]
+        )
+        out = []
+        for (c1, s1), (c2, s2) in zip(edges, edges[1:]):
+            if s1 != s2 and c2 > c1:
+                out.append((s1, c1, c2))
+        return out
+
+    def apply(self, run: EncoderRun) -> None:
+        cands = self.candidates(run)
+        if self.index is not None:
+            chosen = [cands[self.index]] if self.index < len(cands) else []
+        else:
+            rng = np.random.default_rng(self.seed)
+            picks = rng.choice(len(cands), size=min(self.count, len(cands)), replace=False)
+            chosen = [cands[i] for i in sorted(picks.tolist())]
+        for signal, c1, c2 in chosen:
+            sig = run.signals[signal]
+            sig[c1:c2] = sig[c1 - 1]
+
+
+@dataclass(frozen=True)
+class Bounce:
+    """Chatter around every edge of the named signals: random levels in a window of
+    `width` clocks centred on the edge, clipped half-way to the neighbouring edges so
+    that every settled level stays as it was."""
+
+    signals: tuple[str, ...] = ("a", "b")
+    width: int = 4
+    seed: int = 0
+
+    def apply(self, run: EncoderRun) -> None:
+        rng = np.random.default_rng(self.seed)
+        for name in self.signals:
+            sig = run.signals[_signal_key(name)]
+            edges = _edges(sig)
+            if not len(edges):
+                continue
+            bounds = np.concatenate([[0], edges, [len(sig)]])
+            for i, c in enumerate(edges.tolist(), start=1):
+                lo = max(c - self.width // 2, (bounds[i - 1] + c + 1) // 2)
+                hi = min(c + (self.width - self.width // 2), (c + bounds[i + 1]) // 2)
+                if hi > lo:
+                    sig[lo:hi] = rng.integers(0, 2, hi - lo, dtype=np.uint8)

