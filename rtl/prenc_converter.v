@@ -81,22 +81,23 @@ module prenc_converter #(
     if (check_fd == 0) begin
       $display("ERROR: %m: ROM_FILE \"%0s\" cannot be opened", ROM_FILE);
       $finish;
-    end
-    $fclose(check_fd);
-    for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
-      rom_check[check_i] = {1'b1, {N{1'b0}}};
-    end
-    $readmemh(ROM_FILE, rom_check);
-    check_missing = 0;
-    for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
-      if (rom_check[check_i][N]) begin
-        check_missing = check_missing + 1;
+    end else begin
+      $fclose(check_fd);
+      for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
+        rom_check[check_i] = {1'b1, {N{1'b0}}};
       end
-    end
-    if (check_missing != 0) begin
-      $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than N = %0d",
-               ROM_FILE, check_missing, DEPTH, N);
-      $finish;
+      $readmemh(ROM_FILE, rom_check);
+      check_missing = 0;
+      for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
+        if (rom_check[check_i][N]) begin
+          check_missing = check_missing + 1;
+        end
+      end
+      if (check_missing != 0) begin
+        $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than N = %0d",
+                 ROM_FILE, check_missing, DEPTH, N);
+        $finish;
+      end
     end
   end
 `endif

@@ -43,6 +43,18 @@ def _signal_key(signal: str) -> str:
     return signal
 
 
+def _non_negative(**kwargs: int) -> None:
+    for name, value in kwargs.items():
+        if value < 0:
+            raise ValueError(f"{name} must not be negative, got {value!r}")
+
+
+def _positive(**kwargs: int) -> None:
+    for name, value in kwargs.items():
+        if value < 1:
+            raise ValueError(f"{name} must be at least 1, got {value!r}")
+
+
 def _track_position(run: EncoderRun, head: int) -> np.ndarray:
     """The track slot under a head at each clock (head 2 sits L/2 away)."""
     offset = 0 if head == 1 else run.disc.length // 2
@@ -61,6 +73,10 @@ class TransientMisread:
     slot: int
     pass_index: int = 0
 
+    def __post_init__(self) -> None:
+        _head_key(self.head)
+        _non_negative(pass_index=self.pass_index)
+
     def apply(self, run: EncoderRun) -> None:
         key = _head_key(self.head)
         passes = _runs(run.slot == self.slot % run.disc.length)
@@ -76,6 +92,11 @@ class RandomMisreads:
     head: int
     probability: float
     seed: int = 0
+
+    def __post_init__(self) -> None:
+        _head_key(self.head)
+        if not 0.0 <= self.probability <= 1.0:
+            raise ValueError(f"probability must be in 0..1, got {self.probability!r}")
 
     def apply(self, run: EncoderRun) -> None:
         key = _head_key(self.head)
@@ -94,6 +115,9 @@ class ContaminatedSlot:
     track: int
     slot: int
 
+    def __post_init__(self) -> None:
+        _head_key(self.track)
+
     def apply(self, run: EncoderRun) -> None:
         key = _head_key(self.track)  # head h reads track h
         under = _track_position(run, self.track) == self.slot % run.disc.length
@@ -110,6 +134,8 @@ class DeadHead:
     seed: int = 0
 
     def __post_init__(self) -> None:
+        _head_key(self.head)
+        _non_negative(start_clock=self.start_clock)
         if self.mode not in ("stuck0", "stuck1", "noise"):
             raise ValueError(f"mode must be stuck0, stuck1 or noise, got {self.mode!r}")
 
@@ -130,6 +156,11 @@ class Glitch:
     clock: int
     width: int = 1
 
+    def __post_init__(self) -> None:
+        _signal_key(self.signal)
+        _non_negative(clock=self.clock)
+        _positive(width=self.width)
+
     def apply(self, run: EncoderRun) -> None:
         run.signals[_signal_key(self.signal)][self.clock : self.clock + self.width] ^= 1
 
@@ -143,6 +174,13 @@ class RandomGlitches:
     min_width: int = 1
     max_width: int = 1
     seed: int = 0
+
+    def __post_init__(self) -> None:
+        _signal_key(self.signal)
+        _non_negative(count=self.count)
+        _positive(min_width=self.min_width)
+        if self.max_width < self.min_width:
+            raise ValueError(f"max_width {self.max_width} < min_width {self.min_width}")
 
     def apply(self, run: EncoderRun) -> None:
         rng = np.random.default_rng(self.seed)
@@ -166,6 +204,11 @@ class MissedQuadratureState:
     index: int | None = None
     count: int = 1
     seed: int = 0
+
+    def __post_init__(self) -> None:
+        _non_negative(count=self.count)
+        if self.index is not None:
+            _non_negative(index=self.index)
 
     def candidates(self, run: EncoderRun) -> list[tuple[str, int, int]]:
         """(signal, edge clock, next edge clock of the other signal) in time order."""
@@ -200,6 +243,11 @@ class Bounce:
     signals: tuple[str, ...] = ("a", "b")
     width: int = 4
     seed: int = 0
+
+    def __post_init__(self) -> None:
+        for name in self.signals:
+            _signal_key(name)
+        _positive(width=self.width)
 
     def apply(self, run: EncoderRun) -> None:
         rng = np.random.default_rng(self.seed)

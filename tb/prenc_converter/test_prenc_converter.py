@@ -20,6 +20,7 @@ from prenc.converter import CONVERTER_LATENCY, Converter
 from prenc.debruijn import Code
 from prenc.rom import write_rom
 from runner import SIM_BUILD, SIMULATORS, run
+from yosys import synthesize
 
 TOPLEVEL = "prenc_converter"
 
@@ -126,3 +127,66 @@ def rom_for(n: int, fmt: str = "hex") -> Path:
 @pytest.mark.parametrize("n", [4, 6, 10, 12])
 def test_prenc_converter(simulator, n):
     run(__file__, TOPLEVEL, simulator, parameters={"N": n, "ROM_FILE": rom_for(n)})
+
+
+BAD_ROMS = SIM_BUILD / "roms" / "bad"
+
+
+def bad_rom(case: str) -> Path:
+    """A ROM file for N = 6 that must be rejected (fixed paths: builds are reused)."""
+    BAD_ROMS.mkdir(parents=True, exist_ok=True)
+    path = BAD_ROMS / f"{case}.hex"
+    good = [f"{p:02x}" for p in Code(6).positions.tolist()]
+    if case == "missing":
+        path.unlink(missing_ok=True)
+    elif case == "short":
+        path.write_text("\n".join(good[:-1]) + "\n")  # 63 of 64 words
+    elif case == "wide":
+        path.write_text("\n".join(good[:-1] + ["7f"]) + "\n")  # a 7-bit word in a 6-bit ROM
+    return path
+
+
+@pytest.mark.parametrize("simulator", SIMULATORS)
+@pytest.mark.parametrize(
+    "case, message",
+    [("missing", "cannot be opened"), ("short", "1 of 64 words missing"), ("wide", "1 of 64 words missing")],
+)
+def test_bad_rom_file_stops_the_simulation(simulator, case, message, capfd):
+    with pytest.raises(SystemExit):
+        run(__file__, TOPLEVEL, simulator, parameters={"N": 6, "ROM_FILE": bad_rom(case)},
+            testcase="every_word_in_order")
+    out = capfd.readouterr()
+    text = out.out + out.err
+    assert f'ERROR: {TOPLEVEL}: ROM_FILE "{bad_rom(case)}"' in text
+    assert message in text
+
+
+@pytest.mark.parametrize("simulator", SIMULATORS)
+@pytest.mark.parametrize("n", [1, 25])
+def test_illegal_n_stops_elaboration(simulator, n, capfd):
+    with pytest.raises((SystemExit, RuntimeError)):  # a failed build raises RuntimeError
+        run(__file__, TOPLEVEL, simulator, parameters={"N": n, "ROM_FILE": rom_for(4)})
+    out = capfd.readouterr()
+    assert "prenc_converter_parameter_N_out_of_range_2_to_24" in out.out + out.err
+
+
+# Block RAM bits per primitive: iCE40 SB_RAM40_4K 4 kbit, ECP5 DP16KD 18 kbit (16 kbit at x16).
+BLOCK_RAM = {"ice40": ("SB_RAM40_4K", 4096), "ecp5": ("DP16KD", 16384)}
+
+
+@pytest.mark.synth
+@pytest.mark.parametrize("family", sorted(BLOCK_RAM))
+def test_rom_maps_to_block_ram(family):
+    n = 10
+    result = synthesize(TOPLEVEL, family, {"N": n, "ROM_FILE": rom_for(n)})
+    cell, bits = BLOCK_RAM[family]
+    assert result.cells.get(cell, 0) >= -(-(n << n) // bits), result.cells
+    assert not any("LUT" in c for c in result.cells), f"ROM spilled into logic: {result.cells}"
+    assert result.latches == 0
+    assert result.warnings == []
+
+
+@pytest.mark.synth
+def test_missing_rom_file_fails_synthesis():
+    with pytest.raises(RuntimeError, match="Can not open file"):
+        synthesize(TOPLEVEL, "ice40", {"N": 6, "ROM_FILE": bad_rom("missing")})

