@@ -49,13 +49,13 @@ $(STAMP): requirements.txt pyproject.toml | sysdeps
 	touch $@
 
 test: $(STAMP) sysdeps
-	$(WITH_VERILATOR) $(PY) -m pytest -n $(JOBS) --dist loadgroup
+	@$(WITH_VERILATOR) $(PY) -m pytest -n $(JOBS) --dist loadgroup
 
 demo: $(STAMP)
 	$(VENV)/bin/prenc demo --out build/demo
 
 bench: $(STAMP) sysdeps
-	$(WITH_VERILATOR) $(PY) scripts/bench.py
+	@$(WITH_VERILATOR) $(PY) scripts/bench.py
 
 lint: $(STAMP)
 	@cd rtl && for f in *.f; do \

