@@ -41,12 +41,6 @@ TRACK_FORMATS = ("txt", "csv")
 _HEX_DIGITS = np.frombuffer(b"0123456789abcdef", dtype=np.uint8)
 
 
-def rom_table(n: int, taps=None) -> np.ndarray:
-    """The conversion table: table[w(p)] = p for every slot p."""
-    check_bits(n, ROM_MIN_BITS, ROM_MAX_BITS)
-    return Code(n, taps).positions
-
-
 def write_rom(path: str | os.PathLike, n: int, taps=None, fmt: str = "hex") -> None:
     """Write the conversion ROM of the code (n, taps) to path in format fmt."""
     from . import __version__
