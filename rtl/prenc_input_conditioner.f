@@ -1,0 +1,2 @@
+// Sources of prenc_input_conditioner, relative to this folder (verilator -F, or -f from rtl/).
+prenc_input_conditioner.v

@@ -1,0 +1,90 @@
+// prenc_input_conditioner: synchronizers and glitch filters for asynchronous inputs.
+//
+// Each input bit goes through a two-flop synchronizer, then a glitch filter: a new
+// level reaches the output only after the synchronized input has shown it on
+// FILTER consecutive clocks, so a pulse shorter than FILTER clocks never passes.
+//
+// Latency from a clean input edge: 2 clocks (synchronizer), plus FILTER clocks when
+// FILTER > 0. FILTER = 0 turns the filter off (the synchronizer output directly).
+//
+// Parameters
+//   WIDTH    number of inputs, >= 1 (the reader uses 4: head1, head2, A, B)
+//   FILTER   filter length in clocks, 0..65535
+//
+// Ports
+//   clk, rst   one clock; synchronous active-high reset. During reset the filter
+//              output loads the synchronized input, so hold rst for >= 2 clocks and
+//              the output starts at the true input level without a false edge.
+//   in_raw     asynchronous inputs
+//   in_clean   synchronized, filtered inputs
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_input_conditioner #(
+  parameter integer WIDTH  = 4,
+  parameter integer FILTER = 2
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire [WIDTH-1:0] in_raw,
+  output wire [WIDTH-1:0] in_clean
+);
+
+  generate
+    if (WIDTH < 1) begin : g_bad_width
+      initial $display("ERROR: %m: parameter WIDTH = %0d must be at least 1", WIDTH);
+      prenc_input_conditioner_parameter_WIDTH_below_1 u_stop ();
+    end
+    if (FILTER < 0 || FILTER > 65535) begin : g_bad_filter
+      initial $display("ERROR: %m: parameter FILTER = %0d is out of range 0..65535", FILTER);
+      prenc_input_conditioner_parameter_FILTER_out_of_range_0_to_65535 u_stop ();
+    end
+  endgenerate
+
+  // Two-flop synchronizer, written as one visible shift.
+  reg [WIDTH-1:0] sync_q1;
+  reg [WIDTH-1:0] sync_q2;
+
+  always @(posedge clk) begin
+    {sync_q2, sync_q1} <= {sync_q1, in_raw};
+  end
+
+  generate
+    if (FILTER == 0) begin : g_no_filter
+      wire unused_rst = rst;  // nothing to reset without a filter
+      assign in_clean = sync_q2;
+    end else begin : g_filter
+      localparam integer  CW     = (FILTER < 2) ? 1 : $clog2(FILTER);
+      localparam [31:0]   LAST32 = FILTER - 1;
+      localparam [CW-1:0] LAST   = LAST32[CW-1:0];
+
+      genvar i;
+      for (i = 0; i < WIDTH; i = i + 1) begin : g_bit
+        reg [CW-1:0] count_reg;  // clocks the input has differed from the output
+        reg          level_reg;
+
+        always @(posedge clk) begin
+          if (sync_q2[i] == level_reg) begin
+            count_reg <= {CW{1'b0}};
+          end else if (count_reg == LAST) begin
+            count_reg <= {CW{1'b0}};
+            level_reg <= sync_q2[i];
+          end else begin
+            count_reg <= count_reg + 1'b1;
+          end
+          if (rst) begin
+            count_reg <= {CW{1'b0}};
+            level_reg <= sync_q2[i];
+          end
+        end
+
+        assign in_clean[i] = level_reg;
+      end
+    end
+  endgenerate
+
+endmodule
+
+`resetall

@@ -1,0 +1,118 @@
+// prenc_quadrature: quadrature decoder of the sync track.
+//
+// Maps (A, B) to the datasheet's quarter index q = 0..3 ((0,1), (0,0), (1,0), (1,1)),
+// compares it with the previous clock's q and reports one of: no change, a legal
+// step CW (q + 1 mod 4), a legal step CCW (q - 1 mod 4), or an illegal transition
+// (q + 2: A and B changed together, a missed state). An illegal transition is
+// never counted as a step; the decoder takes the new state and goes on.
+//
+// Errors are counted, not latched: illegal_count is a saturating counter cleared by
+// clear_errors. A count tells the host how often, saturation keeps it from ever
+// wrapping back to a harmless-looking zero, and the illegal pulse gives the event
+// itself to the logic that must react at once.
+//
+// Parameters
+//   COUNT_WIDTH  width of the signed step counter, 2..64
+//   ERROR_WIDTH  width of the illegal-transition counter, 1..32
+//
+// Ports (outputs are registered, one clock after the input they describe)
+//   a, b           conditioned sync inputs
+//   clear_errors   clears illegal_count (wins over a simultaneous illegal transition)
+//   quarter        q of the current state
+//   step           a legal transition happened; step_cw gives its direction
+//   step_cw        1 for CW (q increased), 0 for CCW; holds the last step's direction
+//   illegal        an illegal transition happened
+//   illegal_count  illegal transitions since reset or clear_errors, saturating
+//   count          CW steps minus CCW steps since reset (two's complement, wraps)
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_quadrature #(
+  parameter integer COUNT_WIDTH = 32,
+  parameter integer ERROR_WIDTH = 16
+) (
+  input  wire                   clk,
+  input  wire                   rst,
+  input  wire                   a,
+  input  wire                   b,
+  input  wire                   clear_errors,
+  output wire [1:0]             quarter,
+  output wire                   step,
+  output wire                   step_cw,
+  output wire                   illegal,
+  output wire [ERROR_WIDTH-1:0] illegal_count,
+  output wire [COUNT_WIDTH-1:0] count
+);
+
+  generate
+    if (COUNT_WIDTH < 2 || COUNT_WIDTH > 64) begin : g_bad_count_width
+      initial $display("ERROR: %m: parameter COUNT_WIDTH = %0d is out of range 2..64", COUNT_WIDTH);
+      prenc_quadrature_parameter_COUNT_WIDTH_out_of_range_2_to_64 u_stop ();
+    end
+    if (ERROR_WIDTH < 1 || ERROR_WIDTH > 32) begin : g_bad_error_width
+      initial $display("ERROR: %m: parameter ERROR_WIDTH = %0d is out of range 1..32", ERROR_WIDTH);
+      prenc_quadrature_parameter_ERROR_WIDTH_out_of_range_1_to_32 u_stop ();
+    end
+  endgenerate
+
+  // q = {A, A xnor B}: (0,1) -> 0, (0,0) -> 1, (1,0) -> 2, (1,1) -> 3.
+  wire [1:0] q_in = {a, ~(a ^ b)};
+
+  reg [1:0]             quarter_reg;
+  reg                   step_reg;
+  reg                   step_cw_reg;
+  reg                   illegal_reg;
+  reg [ERROR_WIDTH-1:0] illegal_count_reg;
+  reg [COUNT_WIDTH-1:0] count_reg;
+
+  wire [1:0] delta = q_in - quarter_reg;
+
+  always @(posedge clk) begin
+    quarter_reg <= q_in;
+    step_reg    <= 1'b0;
+    illegal_reg <= 1'b0;
+    case (delta)
+      2'd1: begin
+        step_reg    <= 1'b1;
+        step_cw_reg <= 1'b1;
+        count_reg   <= count_reg + 1'b1;
+      end
+      2'd3: begin
+        step_reg    <= 1'b1;
+        step_cw_reg <= 1'b0;
+        count_reg   <= count_reg - 1'b1;
+      end
+      2'd2: begin
+        illegal_reg <= 1'b1;
+        if (illegal_count_reg != {ERROR_WIDTH{1'b1}}) begin
+          illegal_count_reg <= illegal_count_reg + 1'b1;
+        end
+      end
+      default: begin
+      end
+    endcase
+    if (clear_errors) begin
+      illegal_count_reg <= {ERROR_WIDTH{1'b0}};
+    end
+    if (rst) begin
+      quarter_reg       <= q_in;  // start from the current state: no false step
+      step_reg          <= 1'b0;
+      step_cw_reg       <= 1'b1;
+      illegal_reg       <= 1'b0;
+      illegal_count_reg <= {ERROR_WIDTH{1'b0}};
+      count_reg         <= {COUNT_WIDTH{1'b0}};
+    end
+  end
+
+  assign quarter       = quarter_reg;
+  assign step          = step_reg;
+  assign step_cw       = step_cw_reg;
+  assign illegal       = illegal_reg;
+  assign illegal_count = illegal_count_reg;
+  assign count         = count_reg;
+
+endmodule
+
+`resetall

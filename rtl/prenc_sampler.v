@@ -1,0 +1,90 @@
+// prenc_sampler: mid-slot sampling strobes and the head readings taken there.
+//
+// The datasheet samples the code tracks at mid-slot: on A rising going CW (q 1 -> 2)
+// and on A falling going CCW (q 2 -> 1). This module turns the quadrature decoder's
+// steps into those strobes, each with its direction, and latches both heads as they
+// were at the very input sample where A changed (the heads are delayed by the same
+// pipeline as the step), so a fast disc cannot move the heads on before they are read.
+//
+// Reversals: consecutive strobes in the same direction are one slot apart;
+// consecutive strobes in opposite directions are the same mid-slot point crossed
+// back (the disc turned round without reaching the next one, however much it
+// dithered in between). strobe_moved tells the two apart, so the shift register
+// moves the word only when the disc reached a new slot. The first strobe after
+// reset or a break in continuity counts as moved.
+//
+// Ports (outputs registered)
+//   head1_in, head2_in   conditioned heads, same latency as the decoder's inputs
+//   step, step_cw        from prenc_quadrature (one clock after the input sample)
+//   quarter              from prenc_quadrature: q after the step
+//   break_in             continuity lost (an illegal transition): forget direction
+//   strobe               a mid-slot sampling instant
+//   strobe_cw            its direction: 1 CW (A rose), 0 CCW (A fell)
+//   strobe_moved         the disc is in a new slot since the last strobe
+//   strobe_head1/2       the heads at that instant
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_sampler (
+  input  wire       clk,
+  input  wire       rst,
+  input  wire       head1_in,
+  input  wire       head2_in,
+  input  wire       step,
+  input  wire       step_cw,
+  input  wire [1:0] quarter,
+  input  wire       break_in,
+  output wire       strobe,
+  output wire       strobe_cw,
+  output wire       strobe_moved,
+  output wire       strobe_head1,
+  output wire       strobe_head2
+);
+
+  // Heads delayed one clock, to line up with the decoder's step output.
+  reg head1_d;
+  reg head2_d;
+
+  reg strobe_reg;
+  reg strobe_cw_reg;
+  reg strobe_moved_reg;
+  reg strobe_head1_reg;
+  reg strobe_head2_reg;
+  reg have_last_reg;  // a strobe has been seen since reset or the last break
+  reg last_cw_reg;    // direction of that strobe
+
+  wire mid_slot = step & (step_cw ? (quarter == 2'd2) : (quarter == 2'd1));
+
+  always @(posedge clk) begin
+    head1_d    <= head1_in;
+    head2_d    <= head2_in;
+    strobe_reg <= 1'b0;
+    if (mid_slot) begin
+      strobe_reg       <= 1'b1;
+      strobe_cw_reg    <= step_cw;
+      strobe_moved_reg <= ~have_last_reg | (step_cw == last_cw_reg);
+      strobe_head1_reg <= head1_d;
+      strobe_head2_reg <= head2_d;
+      have_last_reg    <= 1'b1;
+      last_cw_reg      <= step_cw;
+    end
+    if (break_in) begin
+      have_last_reg <= 1'b0;
+    end
+    if (rst) begin
+      strobe_reg    <= 1'b0;
+      have_last_reg <= 1'b0;
+    end
+  end
+
+  assign strobe       = strobe_reg;
+  assign strobe_cw    = strobe_cw_reg;
+  assign strobe_moved = strobe_moved_reg;
+  assign strobe_head1 = strobe_head1_reg;
+  assign strobe_head2 = strobe_head2_reg;
+
+endmodule
+
+`resetall

@@ -1,0 +1,90 @@
+// prenc_shift_register: the main code word, formed from whichever head leads.
+//
+// At slot p the word is W(p) = s(p) .. s(p+N-1), s(p) in the MSB. Head 1 reads
+// s(p), the MSB; head 2 reads s(p+N-1), the LSB. On a strobe that reached a new slot:
+//   CW  (p -> p+1): shift left,  head 2's s(p+N) enters as the LSB;
+//   CCW (p -> p-1): shift right, head 1's s(p-1) enters as the MSB.
+// On a strobe at the same slot (a reversal), nothing shifts; the leading head's bit
+// fills that end of the word if it is not known yet.
+//
+// `known` marks the bits read since reset or the last flush (a break in continuity);
+// it shifts with the word, and `count` is how many of them there are (the number of
+// ones in `known`), so `full` (count = N) is when the word can be converted.
+//
+// Parameters
+//   N   code word length, 2..24
+//
+// Ports (outputs registered)
+//   flush                    forget every bit (continuity lost); wins over a strobe
+//   strobe, strobe_cw, strobe_moved, strobe_head1, strobe_head2   from prenc_sampler
+//   word, known, count, full
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_shift_register #(
+  parameter integer N = 10
+) (
+  input  wire                   clk,
+  input  wire                   rst,
+  input  wire                   flush,
+  input  wire                   strobe,
+  input  wire                   strobe_cw,
+  input  wire                   strobe_moved,
+  input  wire                   strobe_head1,
+  input  wire                   strobe_head2,
+  output wire [N-1:0]           word,
+  output wire [N-1:0]           known,
+  output wire [$clog2(N+1)-1:0] count,
+  output wire                   full
+);
+
+  localparam integer CW = $clog2(N + 1);
+  localparam [31:0]  N32 = N;
+
+  generate
+    if (N < 2 || N > 24) begin : g_bad_n
+      initial $display("ERROR: %m: parameter N = %0d is out of range 2..24", N);
+      prenc_shift_register_parameter_N_out_of_range_2_to_24 u_stop ();
+    end
+  endgenerate
+
+  reg [N-1:0]  word_reg;
+  reg [N-1:0]  known_reg;
+  reg [CW-1:0] count_reg;
+
+  always @(posedge clk) begin
+    if (strobe) begin
+      if (strobe_moved && strobe_cw) begin
+        word_reg  <= {word_reg[N-2:0], strobe_head2};
+        known_reg <= {known_reg[N-2:0], 1'b1};
+        count_reg <= count_reg + 1'b1 - {{(CW-1){1'b0}}, known_reg[N-1]};
+      end else if (strobe_moved) begin
+        word_reg  <= {strobe_head1, word_reg[N-1:1]};
+        known_reg <= {1'b1, known_reg[N-1:1]};
+        count_reg <= count_reg + 1'b1 - {{(CW-1){1'b0}}, known_reg[0]};
+      end else if (strobe_cw && !known_reg[0]) begin
+        word_reg[0]  <= strobe_head2;
+        known_reg[0] <= 1'b1;
+        count_reg    <= count_reg + 1'b1;
+      end else if (!strobe_cw && !known_reg[N-1]) begin
+        word_reg[N-1]  <= strobe_head1;
+        known_reg[N-1] <= 1'b1;
+        count_reg      <= count_reg + 1'b1;
+      end
+    end
+    if (rst || flush) begin
+      known_reg <= {N{1'b0}};
+      count_reg <= {CW{1'b0}};
+    end
+  end
+
+  assign word  = word_reg;
+  assign known = known_reg;
+  assign count = count_reg;
+  assign full  = (count_reg == N32[CW-1:0]);
+
+endmodule
+
+`resetall
