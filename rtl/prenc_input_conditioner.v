@@ -13,8 +13,9 @@
 //
 // Ports
 //   clk, rst   one clock; synchronous active-high reset. During reset the filter
-//              output loads the synchronized input, so hold rst for >= 2 clocks and
-//              the output starts at the true input level without a false edge.
+//              output loads the synchronized input: it holds the true input level
+//              from the third reset clock on, so a logic that loads its start state
+//              from in_clean during reset needs rst for at least 4 clocks.
 //   in_raw     asynchronous inputs
 //   in_clean   synchronized, filtered inputs
 

@@ -15,6 +15,10 @@
 //   COUNT_WIDTH  width of the signed step counter, 2..64
 //   ERROR_WIDTH  width of the illegal-transition counter, 1..32
 //
+// Reset loads the current (A, B) state without a step. Behind prenc_input_conditioner
+// hold rst for at least 4 clocks (3 with FILTER = 0), so that the state it loads is
+// the settled input and not the conditioner's start-up value.
+//
 // Ports (outputs are registered, one clock after the input they describe)
 //   a, b           conditioned sync inputs
 //   clear_errors   clears illegal_count (wins over a simultaneous illegal transition)
