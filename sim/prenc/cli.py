@@ -19,6 +19,7 @@ from typing import Sequence
 from . import __version__
 from .debruijn import Code
 from .encoder import default_shift
+from .predictor import taps_mask
 from .lfsr import MAX_BITS, MIN_BITS, TapsError, check_bits, check_taps, poly_str, polynomial
 from .rom import FORMATS, ROM_MAX_BITS, ROM_MIN_BITS, TRACK_FORMATS, format_tracks, write_atomically, write_rom
 
@@ -63,7 +64,8 @@ def cmd_tracks(args: argparse.Namespace) -> None:
 
 def cmd_taps(args: argparse.Namespace) -> None:
     taps = check_taps(args.bits, args.taps)
-    print(f"N={args.bits} taps={','.join(map(str, taps))} P(x)={poly_str(polynomial(taps))} primitive")
+    print(f"N={args.bits} taps={','.join(map(str, taps))} P(x)={poly_str(polynomial(taps))} primitive; "
+          f"RTL parameter TAPS = 32'h{taps_mask(taps):08x}")
 
 
 def cmd_demo(args: argparse.Namespace) -> None:

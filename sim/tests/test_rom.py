@@ -132,5 +132,6 @@ def test_a_failed_run_keeps_an_existing_table(tmp_path):
 def test_taps_command_checks_a_set():
     ok = prenc("taps", "--bits", "10")
     assert ok.returncode == 0 and "x^10 + x^7 + 1" in ok.stdout
+    assert "TAPS = 32'h00000204" in ok.stdout  # bits 9 and 2: taps 10 and 3
     bad = prenc("taps", "--bits", "8", "--taps", "8,4")
     assert bad.returncode == 1 and "not primitive" in bad.stderr
