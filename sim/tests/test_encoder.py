@@ -272,3 +272,20 @@ def test_fault_arguments_are_checked():
         RandomMisreads(head=1, probability=1.5)
     with pytest.raises(ValueError):
         Bounce(("a", "z"))
+
+
+def test_random_misreads_hit_whole_passes_with_the_given_probability(back_and_forth):
+    clean = VirtualEncoder().run(back_and_forth)
+    always = VirtualEncoder(faults=[RandomMisreads(head=2, probability=1.0)]).run(back_and_forth)
+    never = VirtualEncoder(faults=[RandomMisreads(head=2, probability=0.0)]).run(back_and_forth)
+    assert np.all(always.head2 != clean.head2) and np.array_equal(never.head2, clean.head2)
+    half = [VirtualEncoder(faults=[RandomMisreads(2, 0.5, seed=s)]).run(back_and_forth).head2 for s in (1, 1, 2)]
+    assert np.array_equal(half[0], half[1]) and not np.array_equal(half[0], half[2])
+    wrong = half[0] != clean.head2
+    # a pass is misread whole: the wrong clocks are unions of whole slot visits
+    edges = np.diff(np.concatenate([[0], wrong.astype(int), [0]]))
+    for start, stop in zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)):
+        assert start == 0 or clean.slot[start] != clean.slot[start - 1]
+        assert stop == len(wrong) or clean.slot[stop] != clean.slot[stop - 1]
+    assert 0.3 < wrong.mean() < 0.7
+    assert np.array_equal(always.head1, clean.head1)  # the other head is untouched
