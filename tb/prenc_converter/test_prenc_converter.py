@@ -7,15 +7,13 @@ is written by the same code as `prenc rom`.
 
 from __future__ import annotations
 
-import os
-import random
 from pathlib import Path
 
 import cocotb
 import pytest
-from cocotb.clock import Clock
 from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
+from common import clock_and_check, rng, start_clock_and_reset
 from prenc.converter import CONVERTER_LATENCY, Converter
 from prenc.debruijn import Code
 from prenc.rom import write_rom
@@ -26,41 +24,26 @@ TOPLEVEL = "prenc_converter"
 
 
 class TB:
-    """Clock, reset and the word driver of a prenc_converter."""
+    """The converter with its model beside it."""
 
     def __init__(self, dut):
         self.dut = dut
         self.n = len(dut.word)
         self.code = Code(self.n)
         self.model = Converter(self.code)
-        dut.word_valid.value = 0
-        dut.word.value = 0
-        dut.rst.value = 1
-        cocotb.start_soon(Clock(dut.clk, 10, unit="ns").start())
 
     async def reset(self) -> None:
-        self.dut.rst.value = 1
-        for _ in range(2):
-            await RisingEdge(self.dut.clk)
-        await FallingEdge(self.dut.clk)
-        self.dut.rst.value = 0
+        await start_clock_and_reset(self.dut, 2, {"word_valid": 0, "word": 0})
         self.model.reset()
 
     async def step(self, word_valid: int, word: int) -> None:
         """Drive one clock of inputs and check the outputs against the model."""
-        self.dut.word_valid.value = word_valid
-        self.dut.word.value = word
-        await RisingEdge(self.dut.clk)
-        await ReadOnly()
         expected = self.model.clock(word_valid, word)
-        got_valid = int(self.dut.pos_valid.value)
-        assert got_valid == expected.pos_valid, f"pos_valid {got_valid}, model {expected.pos_valid}"
+        check = {"pos_valid": expected.pos_valid}
         if expected.pos is not None:
-            got = self.dut.pos.value.to_unsigned()
-            assert got == expected.pos, (
-                f"word {word:#x}: pos {got}, expected {expected.pos} (valid={got_valid})"
-            )
-        await FallingEdge(self.dut.clk)
+            check["pos"] = expected.pos
+        await clock_and_check(self.dut, {"word_valid": word_valid, "word": word}, check,
+                              lambda: f"word {word:#x}")
 
 
 @cocotb.test()
@@ -78,12 +61,12 @@ async def every_word_shuffled_with_gaps(dut):
     """All words in random order with random idle clocks; pos holds while idle."""
     tb = TB(dut)
     await tb.reset()
-    rng = random.Random(int(os.environ.get("COCOTB_RANDOM_SEED", "1")))
+    r = rng()
     words = list(range(1 << tb.n))
-    rng.shuffle(words)
+    r.shuffle(words)
     for word in words:
-        while rng.random() < 0.25:
-            await tb.step(0, rng.randrange(1 << tb.n))
+        while r.random() < 0.25:
+            await tb.step(0, r.randrange(1 << tb.n))
         await tb.step(1, word)
     await tb.step(0, 0)
 
