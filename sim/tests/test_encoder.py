@@ -222,8 +222,10 @@ def test_glitch_inverts_exactly_its_clocks(back_and_forth):
 def test_random_glitches_have_the_asked_widths(back_and_forth):
     clean = VirtualEncoder().run(back_and_forth)
     run = VirtualEncoder(faults=[RandomGlitches("a", count=5, min_width=2, max_width=2, seed=9)]).run(back_and_forth)
-    changed = np.flatnonzero(run.a != clean.a)
-    assert 0 < len(changed) <= 10
+    edges = np.diff(np.concatenate([[0], (run.a != clean.a).astype(int), [0]]))
+    starts, stops = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    assert len(starts) == 5  # seed 9: five separate glitches
+    assert (stops - starts).tolist() == [2] * 5
 
 
 def test_missed_quadrature_state_makes_a_and_b_change_together(back_and_forth):

@@ -12,7 +12,7 @@ import json
 import os
 
 import cocotb
-from cocotb.triggers import ReadOnly, RisingEdge
+from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import drive_events, start_clock_and_reset
 
@@ -48,18 +48,18 @@ async def sweep_dwell(dut):
             dut.sync_a.value, dut.sync_b.value, dut.rst.value = a, b, 1
             for _ in range(6):
                 await RisingEdge(dut.clk)
-            await cocotb.triggers.FallingEdge(dut.clk)
+            await FallingEdge(dut.clk)
             dut.rst.value = 0
         q = await leg(dut, 0, 64, +1, dwell)
         await ReadOnly()
         forward = signed(int(dut.step_count.value), width)
-        await cocotb.triggers.FallingEdge(dut.clk)
+        await FallingEdge(dut.clk)
         await leg(dut, q, 128, -1, dwell)
         await ReadOnly()
         backward = signed(int(dut.step_count.value), width)
         illegal = int(dut.illegal_count.value)
         verdicts[dwell] = {"forward": forward, "backward": backward, "illegal": illegal,
                            "ok": forward == 64 and backward == -64 and illegal == 0}
-        await cocotb.triggers.FallingEdge(dut.clk)
+        await FallingEdge(dut.clk)
     with open(os.environ["BENCH_OUT"], "w") as f:
         json.dump({"filter": filter_len, "verdicts": verdicts}, f)
