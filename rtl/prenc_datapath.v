@@ -7,6 +7,11 @@
 //     -> prenc_shift_register    (the main code word W(p), flushed on an illegal step)
 //     -> prenc_predictor         (what each head must read, per-head mismatch)
 //
+// Until the word is full it is formed from the leading head's raw readings. Once it
+// is full it advances by the disc's law (the predicted bits) and the heads only
+// check it: a misread is flagged but never enters the word. `flush` (from the mode
+// state machine) empties it, to form it again from the heads.
+//
 // The same chain is modelled stage for stage by prenc.datapath.Datapath.
 // Hold rst for at least 4 clocks (see prenc_quadrature).
 //
@@ -17,7 +22,9 @@
 //   COUNT_WIDTH  signed step counter width, 2..64
 //   ERROR_WIDTH  illegal-transition counter width, 1..32
 //
-// Ports: the pins, clear_errors, and each stage's outputs (see the stage's file).
+// Ports: the pins, clear_errors, flush, and each stage's outputs (see the stage's
+// file). check_now, mismatch1_now, mismatch2_now are the checks of the strobe on
+// this clock (combinational); check, mismatch1, mismatch2 are the same registered.
 
 `resetall
 `timescale 1ns / 1ps
@@ -37,6 +44,7 @@ module prenc_datapath #(
   input  wire                   sync_a,
   input  wire                   sync_b,
   input  wire                   clear_errors,
+  input  wire                   flush,
   // quadrature
   output wire [1:0]             quarter,
   output wire                   step,
@@ -56,6 +64,11 @@ module prenc_datapath #(
   output wire [$clog2(N+1)-1:0] word_count,
   output wire                   word_full,
   // prediction
+  output wire                   predict1,
+  output wire                   predict2,
+  output wire                   check_now,
+  output wire                   mismatch1_now,
+  output wire                   mismatch2_now,
   output wire                   check,
   output wire                   expect1,
   output wire                   expect2,
@@ -108,17 +121,25 @@ module prenc_datapath #(
     .strobe_head2 (strobe_head2)
   );
 
+  // Raw readings until the word is full, the law after.
+  wire fill1 = word_full ? predict1 : strobe_head1;
+  wire fill2 = word_full ? predict2 : strobe_head2;
+
+  assign check_now     = strobe & word_full;
+  assign mismatch1_now = check_now & (strobe_head1 != predict1);
+  assign mismatch2_now = check_now & (strobe_head2 != predict2);
+
   prenc_shift_register #(
     .N (N)
   ) u_shift_register (
     .clk          (clk),
     .rst          (rst),
-    .flush        (illegal),
+    .flush        (illegal | flush),
     .strobe       (strobe),
     .strobe_cw    (strobe_cw),
     .strobe_moved (strobe_moved),
-    .strobe_head1 (strobe_head1),
-    .strobe_head2 (strobe_head2),
+    .strobe_head1 (fill1),
+    .strobe_head2 (fill2),
     .word         (word),
     .known        (word_known),
     .count        (word_count),
@@ -138,6 +159,8 @@ module prenc_datapath #(
     .strobe_head2 (strobe_head2),
     .word         (word),
     .full         (word_full),
+    .predict1     (predict1),
+    .predict2     (predict2),
     .check        (check),
     .expect1      (expect1),
     .expect2      (expect2),

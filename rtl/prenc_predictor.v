@@ -21,9 +21,13 @@
 //          the default disc T = {10, 3} is 32'h204. `prenc taps` prints it.
 //          Primitivity is checked where the ROM is made (`prenc rom`, `prenc taps`).
 //
-// Ports (outputs registered, one clock after the strobe)
+// Ports
 //   strobe, strobe_cw, strobe_moved, strobe_head1, strobe_head2   from prenc_sampler
 //   word, full               from prenc_shift_register
+//   predict1, predict2       what each head must read at this strobe (combinational,
+//                            valid with strobe and full); once the word is full the
+//                            datapath shifts these in instead of the raw readings
+// Registered, one clock after the strobe:
 //   check                    a check was made
 //   expect1, expect2         the predicted head readings
 //   mismatch1, mismatch2     head 1 / head 2 read otherwise (only with check)
@@ -45,6 +49,8 @@ module prenc_predictor #(
   input  wire         strobe_head2,
   input  wire [N-1:0] word,
   input  wire         full,
+  output wire         predict1,
+  output wire         predict2,
   output wire         check,
   output wire         expect1,
   output wire         expect2,
@@ -105,6 +111,8 @@ module prenc_predictor #(
     end
   end
 
+  assign predict1  = expect1_next;
+  assign predict2  = expect2_next;
   assign check     = check_reg;
   assign expect1   = expect1_reg;
   assign expect2   = expect2_reg;

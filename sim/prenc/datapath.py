@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from .debruijn import Code
 from .encoder import SIGNALS, EncoderRun
 from .input_conditioner import InputConditioner
-from .predictor import Prediction, Predictor
+from .predictor import Prediction, Predictor, expected_heads
 from .quadrature import QuadratureDecoder, QuadratureOutput
 from .sampler import Sampler, Strobe
 from .shift_register import ShiftRegister, Word
@@ -21,13 +21,15 @@ from .shift_register import ShiftRegister, Word
 
 @dataclass
 class DatapathClock:
-    """Every stage's outputs after one rising edge."""
+    """Every stage's outputs after one rising edge (`now`: this clock's check,
+    combinational: check, mismatch1, mismatch2)."""
 
     clean: list[int]  # head1, head2, a, b after the conditioner
     quad: QuadratureOutput
     strobe: Strobe
     word: Word
     prediction: Prediction
+    now: tuple[int, int, int] = (0, 0, 0)
 
 
 @dataclass
@@ -48,21 +50,30 @@ class Datapath:
         self.shift_register = ShiftRegister(self.code.n)
         self.predictor = Predictor(self.code)
 
-    def clock(self, raw: list[int], rst: int = 0) -> DatapathClock:
+    def clock(self, raw: list[int], rst: int = 0, flush: int = 0) -> DatapathClock:
         """One clock; each stage sees the registered outputs of the one before it
-        as they were before this edge, as in the RTL."""
+        as they were before this edge, as in the RTL. Once the word is full it
+        advances by the law (the predicted bits), not by the readings."""
         quad_before = self.quadrature.output()
         strobe_before = self.sampler.out
         word_before = self.shift_register.output()
         clean_before = self._clean
         prediction = self.predictor.clock(*strobe_before, word=word_before.word, full=word_before.full, rst=rst)
-        word = self.shift_register.clock(*strobe_before, flush=quad_before.illegal, rst=rst)
+        s = strobe_before
+        if word_before.full:
+            e1, e2 = expected_heads(self.code, word_before.word, s.cw, s.moved)
+            s = s._replace(head1=e1, head2=e2)
+        word = self.shift_register.clock(*s, flush=int(quad_before.illegal or flush), rst=rst)
         strobe = self.sampler.clock(clean_before[0], clean_before[1], quad_before.step,
                                     quad_before.step_cw, quad_before.quarter,
                                     break_in=quad_before.illegal, rst=rst)
         quad = self.quadrature.clock(clean_before[2], clean_before[3], rst=rst)
         self._clean = self.conditioner.clock(raw, rst=rst)
-        return DatapathClock(list(self._clean), quad, strobe, word, prediction)
+        now = (0, 0, 0)
+        if strobe.strobe and word.full:
+            e1, e2 = expected_heads(self.code, word.word, strobe.cw, strobe.moved)
+            now = (1, int(strobe.head1 != e1), int(strobe.head2 != e2))
+        return DatapathClock(list(self._clean), quad, strobe, word, prediction, now)
 
     def run(self, enc: EncoderRun, reset_clocks: int = 4) -> list[DatapathClock]:
         """The chain over a whole run; rst is high for the first reset_clocks clocks."""

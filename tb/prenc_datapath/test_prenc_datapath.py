@@ -46,6 +46,7 @@ async def matches_model_chain_with_every_fault(dut):
     trace = Datapath(Code(n), filter_len).run(enc, RESET)
     cocotb.start_soon(Clock(dut.clk, 10, unit="ns").start())
     dut.clear_errors.value = 0
+    dut.flush.value = 0
     for k, c in enumerate(trace):
         raw = {pin: int(enc.signals[s][k]) for pin, s in zip(PINS, SIGNALS)}
         await clock_and_check(dut, dict(raw, rst=int(k < RESET)), outputs(c) if k >= RESET else None,
@@ -65,7 +66,7 @@ async def reads_the_true_window_and_counts_the_true_travel(dut):
                                                          knot_seconds=2000)
     enc = VirtualEncoder(Disc(n)).run(traj)
     events = enc.events()
-    await start_clock_and_reset(dut, RESET, dict(zip(PINS, events[0][1:]), clear_errors=0))
+    await start_clock_and_reset(dut, RESET, dict(zip(PINS, events[0][1:]), clear_errors=0, flush=0))
     checked = 0
 
     async def no_mismatch_on_a_clean_disc():

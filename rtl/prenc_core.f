@@ -1,0 +1,12 @@
+// Sources of prenc_core, relative to this folder (verilator -F, or -f from rtl/).
+prenc_input_conditioner.v
+prenc_quadrature.v
+prenc_sampler.v
+prenc_shift_register.v
+prenc_predictor.v
+prenc_datapath.v
+prenc_converter.v
+prenc_position.v
+prenc_track_monitor.v
+prenc_mode_fsm.v
+prenc_core.v

@@ -1,0 +1,143 @@
+"""prenc_core end to end: the virtual encoder drives the pins through every scenario
+of prenc.scenarios (start-up at rest and moving, both directions, reversals,
+acceleration, each fault of the datasheet alone and combined).
+
+Two independent expectations, neither from the RTL:
+- the truth: whenever pos_valid is 1, pos_hyb (and pos_abs) equal the true
+  position 3 + FILTER clocks earlier (prenc.scenarios.judge);
+- the event-level reference prenc.reader.Reader: at every check, the same head
+  mismatches, the same mode after it and, when valid, the same position.
+Availability and the time in each mode are logged per scenario.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import cocotb
+from cocotb.clock import Clock
+from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
+
+from common import PERIOD_NS, drive_events, rng
+from prenc.debruijn import Code
+from prenc.mode_fsm import Mode
+from prenc.predictor import taps_mask
+from prenc.reader import Reader, events_from_run
+from prenc.rom import write_rom
+from prenc.scenarios import core_latency, judge, scenarios
+from runner import SIM_BUILD, SIMULATORS, run
+
+TOPLEVEL = "prenc_core"
+RESET = 4
+PINS = ("head1", "head2", "sync_a", "sync_b")
+NAMES = list(scenarios(6, 0))
+
+
+async def run_core(dut, enc, resolution: int = 1):
+    """Drive a run onto the pins; per clock (rising edge, 0-based) the outputs, and
+    per check (mismatch1, mismatch2, mode after, valid after, pos_abs after)."""
+    events = enc.events()
+    for pin, value in zip(PINS, events[0][1:]):
+        getattr(dut, pin).value = value
+    dut.rst.value = 1
+    dut.resolution.value = resolution
+    dut.clear_errors.value = 0
+    clocks = len(enc)
+    rows = np.zeros((clocks, 4), dtype=np.int64)  # valid, pos_hyb, pos_abs, mode
+    checks = []
+    dp = dut.u_datapath
+
+    async def monitor():
+        pending = None
+        for k in range(clocks + 4):  # 4 more: the last steps' checks come out
+            await RisingEdge(dut.clk)
+            await ReadOnly()
+            valid, hyb, pabs, mode = (int(dut.pos_valid.value), int(dut.pos_hyb.value),
+                                      int(dut.pos_abs.value), int(dut.mode.value))
+            if k < clocks:
+                rows[k] = valid, hyb, pabs, mode
+            if pending is not None:
+                checks.append(pending + (mode, valid, pabs))
+                pending = None
+            if int(dp.check_now.value):
+                pending = (int(dp.mismatch1_now.value), int(dp.mismatch2_now.value))
+
+    async def release_reset():
+        for _ in range(RESET):
+            await RisingEdge(dut.clk)
+        await FallingEdge(dut.clk)
+        dut.rst.value = 0
+
+    # Rising edge k (0-based, the first at half a period) samples enc clock k.
+    cocotb.start_soon(Clock(dut.clk, PERIOD_NS, unit="ns").start(start_high=False))
+    watcher = cocotb.start_soon(monitor())
+    cocotb.start_soon(release_reset())
+    await RisingEdge(dut.clk)
+    await FallingEdge(dut.clk)  # ends clock 0: drive_events counts from clock 1
+    await drive_events(dut, PINS, [(c - 1, *v) for c, *v in events[1:]], clocks + 2)
+    await watcher
+    return rows, checks
+
+
+@cocotb.test()
+@cocotb.parametrize(name=NAMES)
+async def scenario(dut, name):
+    n, filter_len = len(dut.pos_abs), int(dut.FILTER.value)
+    seed = rng().randrange(1 << 30)
+    sc = scenarios(n, filter_len, seed)[name]
+    enc = sc.run(n)
+    rows, checks = await run_core(dut, enc)
+    valid, hyb, pabs, mode = rows.T
+    assert np.all(pabs == hyb >> 2), f"{name}, seed {seed}: pos_abs is not pos_hyb >> 2"
+    verdict = judge(enc, valid, hyb, mode, core_latency(filter_len))
+    dut._log.info("%s (N=%d, FILTER=%d, seed %d): %s", name, n, filter_len, seed, verdict.line())
+    assert verdict.wrong == 0, f"{name}, seed {seed}: wrong valid position at clock {verdict.first_wrong}"
+
+    reader = Reader(Code(n))
+    reader.run(events_from_run(enc, filter_len, RESET))
+    expected = [(c.mismatch1, c.mismatch2, int(c.mode), int(c.valid), c.pos_abs) for c in reader.checks]
+    got = [(m1, m2, md, v, p) for m1, m2, md, v, p in checks]
+    for i, (g, e) in enumerate(zip(got, expected)):
+        # The position is compared where valid; an unverified offset is don't-care.
+        if g[:4] != e[:4] or (e[3] and g[4] != e[4]):
+            raise AssertionError(f"{name}, seed {seed}: check {i}: RTL {g}, reference {e}")
+    assert len(got) == len(expected), f"{name}, seed {seed}: {len(got)} checks, reference {len(expected)}"
+    if name.startswith(("start", "reversals", "accelerate")):
+        assert verdict.first_valid is not None, f"{name}, seed {seed}: never valid"
+
+
+@cocotb.test()
+async def resolution_selects_the_position(dut):
+    n, filter_len = len(dut.pos_abs), int(dut.FILTER.value)
+    sc = scenarios(n, filter_len, 7)["start_at_rest_cw"]
+    enc = sc.run(n)
+    events = enc.events()
+    rows, _ = await run_core(dut, enc, resolution=0)
+    assert int(dut.position.value) == int(dut.pos_abs.value)
+    dut.resolution.value = 1
+    await RisingEdge(dut.clk)
+    await ReadOnly()
+    assert int(dut.position.value) == int(dut.pos_hyb.value)
+    assert rows[-1, 0] == 1 and events
+
+
+def rom_for(n: int):
+    path = SIM_BUILD / "roms" / f"prenc_rom_n{n}.hex"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_rom(path, n)
+    return path
+
+
+def core_parameters(n: int, filter_len: int) -> dict:
+    return {"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": filter_len, "ROM_FILE": rom_for(n)}
+
+
+@pytest.mark.parametrize("filter_len", [0, 2])
+@pytest.mark.parametrize("n", [6, 8, 10])
+def test_prenc_core_verilator(n, filter_len):
+    run(__file__, TOPLEVEL, "verilator", parameters=core_parameters(n, filter_len))
+
+
+def test_prenc_core_icarus_smoke():
+    run(__file__, TOPLEVEL, "icarus", parameters=core_parameters(8, 2),
+        testcase="scenario", extra_env={"COCOTB_TEST_FILTER": "scenario/name=(start_at_rest_cw|combined)"})
