@@ -51,8 +51,8 @@ $(STAMP): requirements.txt pyproject.toml | sysdeps
 test: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) -m pytest -n $(JOBS) --dist loadgroup
 
-demo: $(STAMP)
-	$(VENV)/bin/prenc demo --out build/demo
+demo: $(STAMP) sysdeps
+	@$(WITH_VERILATOR) $(PY) scripts/demo.py --out build/demo
 
 bench: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/bench.py

@@ -277,8 +277,9 @@ module prenc_core #(
 
   // Datapath outputs the core does not use, kept for waveforms (Verilator's
   // unused-signal pattern).
-  wire unused_ok = &{1'b0, strobe_moved, strobe_head1, strobe_head2, word_known, predict1, predict2, check_d, expect1_d, expect2_d, mismatch1_d,
-                     mismatch2_d, error_slot};
+  wire unused_ok = &{1'b0, strobe_moved, strobe_head1, strobe_head2, word_known, predict1,
+                     predict2, check_d, expect1_d, expect2_d, mismatch1_d, mismatch2_d,
+                     error_slot};
 
   assign position     = resolution ? pos_hyb : {2'b00, pos_abs};
   assign direction    = step_cw;

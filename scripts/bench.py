@@ -12,6 +12,11 @@
    dwell (clocks per state) at which rtl/prenc_datapath.v (conditioner + decoder)
    still counts every step and flags nothing, found by sweeping on Verilator; the
    ideal is one state per clock.
+4. Fault campaign of the reference reader (prenc.campaign): 10^6 strobes each at
+   N = 6 and N = 10, seeded, every fault of the datasheet in random mixes; wrong
+   valid positions must be zero.
+5. Fault campaign of the RTL core (tb/prenc_core/bench_prenc_core.py on Verilator):
+   at least 10^5 strobes at N = 10, judged against the true angle clock by clock.
 """
 
 from __future__ import annotations
@@ -76,6 +81,19 @@ def tracking(filter_len: int) -> dict:
     run(str(REPO / "tb" / "prenc_datapath" / "bench_prenc_datapath.py"), "prenc_datapath", "verilator",
         parameters={"N": 10, "TAPS": taps_mask((10, 3)), "FILTER": filter_len},
         extra_env={"BENCH_OUT": str(out)}, log_file=out.with_suffix(".log"))
+    return json.loads(out.read_text())
+
+
+def rtl_campaign(n: int, filter_len: int, strobes: int, seed: int) -> dict:
+    sys.path.insert(0, str(REPO / "tb" / "prenc_core"))
+    from test_prenc_core import core_parameters
+    out = SIM_BUILD / "bench" / f"campaign_n{n}.json"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.unlink(missing_ok=True)
+    run(str(REPO / "tb" / "prenc_core" / "bench_prenc_core.py"), "prenc_core", "verilator",
+        parameters=core_parameters(n, filter_len),
+        extra_env={"BENCH_OUT": str(out), "BENCH_STROBES": str(strobes), "BENCH_SEED": str(seed)},
+        log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
 
 
@@ -145,6 +163,26 @@ def main() -> int:
         print(f"   {filter_len:>6} {d:>6} clk {1 / d:>16.2f}x {rpm:>13,.0f} rpm N=10  {swept}")
     print("   A filter of F clocks needs each of A and B to hold a level F clocks; each holds it")
     print("   for two quadrature states, so the dwell limit is max(1, ceil(F / 2)).")
+
+    from prenc.campaign import campaign
+    print("\n4. Fault campaign, reference reader (events, seed 1): wrong valid positions must be 0")
+    print(f"   {'N':>3} {'strobes':>9} {'events':>9} {'segments':>8} {'wrong valid':>11} {'availability':>12} "
+          f"{'time':>7}  faults injected")
+    for n in (6, 10):
+        t0 = time.perf_counter()
+        r = campaign(n, 1_000_000, 20_000, seed=1)
+        failed |= r.wrong_valid != 0
+        faults = ", ".join(f"{k} {v}" for k, v in r.faults.items())
+        print(f"   {n:>3} {r.strobes:>9,} {r.events:>9,} {r.segments:>8} {r.wrong_valid:>11} "
+              f"{r.availability:>11.1%} {time.perf_counter() - t0:>6.0f}s  {faults}")
+
+    print("\n5. Fault campaign, RTL core on Verilator (N = 10, FILTER = 0, seed 1)")
+    t0 = time.perf_counter()
+    r = rtl_campaign(10, 0, 100_000, 1)
+    failed |= r["wrong_valid_clocks"] != 0
+    print(f"   strobes {r['strobes']:,}, clocks {r['clocks']:,}, segments {r['segments']}, "
+          f"wrong valid clocks {r['wrong_valid_clocks']}, availability "
+          f"{r['valid_clocks'] / r['clocks']:.1%}, {time.perf_counter() - t0:.0f} s")
     return 1 if failed else 0
 
 

@@ -126,12 +126,14 @@ class ContaminatedSlot:
 
 @dataclass(frozen=True)
 class DeadHead:
-    """A head stuck at 0, stuck at 1, or reading noise, from start_clock on."""
+    """A head stuck at 0, stuck at 1, or reading noise, from start_clock on (until
+    stop_clock, if given: the head recovers)."""
 
     head: int
     mode: str = "stuck0"
     start_clock: int = 0
     seed: int = 0
+    stop_clock: int | None = None
 
     def __post_init__(self) -> None:
         _head_key(self.head)
@@ -141,7 +143,7 @@ class DeadHead:
 
     def apply(self, run: EncoderRun) -> None:
         sig = run.signals[_head_key(self.head)]
-        tail = sig[self.start_clock :]
+        tail = sig[self.start_clock : self.stop_clock]
         if self.mode == "noise":
             tail[:] = np.random.default_rng(self.seed).integers(0, 2, len(tail), dtype=np.uint8)
         else:

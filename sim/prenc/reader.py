@@ -85,6 +85,8 @@ class Reader:
         self.last_cw = 0
         self.checks: list[Check] = []
         self.strobes = 0
+        self._clock = -1        # clock of the step being handled, where known
+        self._check_clock = -2  # clock of the step of the last check
 
     # -- outputs
     @property
@@ -99,7 +101,13 @@ class Reader:
     def event(self, ev: Step | Illegal) -> ReaderState:
         if isinstance(ev, Illegal):
             self._illegal(ev.quarter)
+            if self.checks and ev.clock >= 0 and self._check_clock == ev.clock - 1:
+                # The RTL decides a strobe's check one clock after the step, on the
+                # same clock as this illegal transition: it shows both together.
+                self.checks[-1] = self.checks[-1]._replace(mode=self.fsm.mode, valid=self.fsm.valid,
+                                                           pos_abs=self.pos_abs)
         else:
+            self._clock = ev.clock
             self._step(ev)
         return self.state()
 
@@ -157,18 +165,22 @@ class Reader:
             self.offset = (self.code.position(after.word) - self.slot) & self.mask
         if before.full:
             self.checks.append(Check(self.slot, m1, m2, self.fsm.mode, self.fsm.valid, self.pos_abs))
+            self._check_clock = self._clock
 
 
-def events_from_run(enc: EncoderRun, filter_len: int = 0, reset_clocks: int = 4) -> list[Step | Illegal]:
+def events_from_run(enc: EncoderRun, filter_len: int = 0, reset_clocks: int = 4,
+                    tail: int = 0) -> list[Step | Illegal]:
     """What the RTL's conditioner and quadrature decoder make of a run, as events.
 
     Each step carries the heads as the sampler takes them (the conditioned heads the
-    decoder's step was made from) and the clock of the decoder's output."""
+    decoder's step was made from) and the clock of the decoder's output. `tail`
+    more clocks hold the last input levels."""
     cond = InputConditioner(4, filter_len)
     quad = QuadratureDecoder()
     clean_before = [0, 0, 0, 1]
     events: list[Step | Illegal] = []
-    rows = zip(*(enc.signals[s].tolist() for s in SIGNALS))
+    rows = list(zip(*(enc.signals[s].tolist() for s in SIGNALS)))
+    rows += rows[-1:] * tail
     for k, raw in enumerate(rows):
         rst = int(k < reset_clocks)
         q = quad.clock(clean_before[2], clean_before[3], rst=rst)

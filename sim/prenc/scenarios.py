@@ -10,6 +10,9 @@ clock, with the truth of the run:
 
 except where a fault on A or B moved the pins themselves away from the truth: there
 the truth of the clocks within that many clocks is accepted too (`sync_tolerance`).
+With a glitch filter of F clocks, the truth within F clocks is accepted as well: the
+filter removes true pulses shorter than F (a reversal right at an edge) as it
+removes glitches.
 """
 
 from __future__ import annotations
@@ -145,9 +148,9 @@ class Verdict:
 
 
 def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndarray,
-          latency: int, tolerance: int | None = None) -> Verdict:
+          latency: int, tolerance: int | None = None, filter_len: int = 0) -> Verdict:
     """Compare per-clock outputs (index = clock) with the truth of the run."""
-    tol = sync_tolerance(enc) if tolerance is None else tolerance
+    tol = (sync_tolerance(enc) if tolerance is None else tolerance) + filter_len
     valid = np.asarray(valid).astype(bool)
     pos_hyb = np.asarray(pos_hyb, dtype=np.int64)
     truth = enc.hybrid

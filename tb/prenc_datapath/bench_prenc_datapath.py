@@ -42,7 +42,7 @@ async def sweep_dwell(dut):
         a, b = AB_OF_QUARTER[0]
         if first:
             await start_clock_and_reset(dut, 4, {"sync_a": a, "sync_b": b, "head1": 0, "head2": 0,
-                                                 "clear_errors": 0})
+                                                 "clear_errors": 0, "flush": 0})
             first = False
         else:
             dut.sync_a.value, dut.sync_b.value, dut.rst.value = a, b, 1

