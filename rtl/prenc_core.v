@@ -9,7 +9,7 @@
 // See docs/architecture.md for the block diagram, the modes and the timing.
 //
 // Start-up: the word needs N strobes (mid-slot crossings) at distinct slots; then
-// both tracks must agree at N further consecutive slots (2N - 1 slots of movement
+// both tracks must agree at 2N further consecutive slots (3N - 1 slots of movement
 // in all), or one track at RUN_LONG slots when the other disagrees.
 //
 // Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 3 + FILTER
@@ -202,9 +202,11 @@ module prenc_core #(
 
   // Track monitors
   wire run1_n_next;
+  wire run1_2n_next;
   wire run1_long_next;
   wire run1_n;
   wire run2_n_next;
+  wire run2_2n_next;
   wire run2_long_next;
   wire run2_n;
   wire restart    = ~word_full | illegal;
@@ -225,6 +227,7 @@ module prenc_core #(
     .slot          (slot),
     .clear_errors  (clear_errors),
     .run_n_next    (run1_n_next),
+    .run_2n_next   (run1_2n_next),
     .run_long_next (run1_long_next),
     .run_n         (run1_n),
     .errors        (track1_errors)
@@ -245,6 +248,7 @@ module prenc_core #(
     .slot          (slot),
     .clear_errors  (clear_errors),
     .run_n_next    (run2_n_next),
+    .run_2n_next   (run2_2n_next),
     .run_long_next (run2_long_next),
     .run_n         (run2_n),
     .errors        (track2_errors)
@@ -266,6 +270,8 @@ module prenc_core #(
     .word_full      (word_full),
     .run1_n_next    (run1_n_next),
     .run2_n_next    (run2_n_next),
+    .run1_2n_next   (run1_2n_next),
+    .run2_2n_next   (run2_2n_next),
     .run1_long_next (run1_long_next),
     .run2_long_next (run2_long_next),
     .hyp_ready      (hyp_ready),

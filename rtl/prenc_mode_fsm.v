@@ -12,7 +12,7 @@
 // prediction) or at an illegal quadrature transition:
 // - Verifying (ACQUIRE, INCREMENTAL): a track that disagrees is marked bad until the
 //   word is formed again. Both marked: the word is flushed and formed anew. The
-//   position is verified when both tracks have agreed over N consecutive slots, or
+//   position is verified when both tracks have agreed over 2N consecutive slots, or
 //   one track over RUN_LONG (see prenc_track_monitor); the mode becomes NORMAL, or
 //   REDUCED on that track if the other has not reached N.
 // - NORMAL: one track disagrees -> REDUCED on the other, remembering the slot.
@@ -57,6 +57,8 @@ module prenc_mode_fsm #(
   input  wire         word_full,
   input  wire         run1_n_next,
   input  wire         run2_n_next,
+  input  wire         run1_2n_next,
+  input  wire         run2_2n_next,
   input  wire         run1_long_next,
   input  wire         run2_long_next,
   input  wire         hyp_ready,
@@ -108,7 +110,7 @@ module prenc_mode_fsm #(
       bad2_next = bad2_next | mismatch2;
       if (bad1_next && bad2_next) begin
         flush_next = 1'b1;
-      end else if (hyp_ready && ((run1_n_next && run2_n_next) || run1_long_next)) begin
+      end else if (hyp_ready && ((run1_2n_next && run2_2n_next) || run1_long_next)) begin
         mode_next = run2_n_next ? NORMAL : REDUCED_1;
       end else if (hyp_ready && run2_long_next) begin
         mode_next = run1_n_next ? NORMAL : REDUCED_2;

@@ -41,6 +41,7 @@
 //   slot           the incremental slot count at the strobe
 //   clear_errors   zero the error counter
 //   run_n_next     the interval will span at least N slots
+//   run_2n_next    the interval will span at least 2N slots
 //   run_long_next  the interval will span at least RUN_LONG slots
 //   run_n          run_n_next, registered
 //   errors         disagreements counted since reset or clear_errors
@@ -64,6 +65,7 @@ module prenc_track_monitor #(
   input  wire [N-1:0]           slot,
   input  wire                   clear_errors,
   output wire                   run_n_next,
+  output wire                   run_2n_next,
   output wire                   run_long_next,
   output wire                   run_n,
   output wire [ERROR_WIDTH-1:0] errors
@@ -85,7 +87,9 @@ module prenc_track_monitor #(
 
   localparam [31:0] SPAN_N_32    = N - 1;         // hi - lo for an interval of N slots
   localparam [31:0] SPAN_LONG_32 = RUN_LONG - 1;  // hi - lo for RUN_LONG slots
+  localparam [31:0] SPAN_2N_32   = (2 * N < (1 << N) ? 2 * N : (1 << N)) - 1;
   localparam [N:0]  SPAN_N       = SPAN_N_32[N:0];
+  localparam [N:0]  SPAN_2N      = SPAN_2N_32[N:0];
   localparam [N:0]  SPAN_LONG    = SPAN_LONG_32[N:0];
 
   reg [N-1:0]           lo_reg;
@@ -162,6 +166,7 @@ module prenc_track_monitor #(
   wire [N:0] width_next = {1'b0, hi_next - lo_next};
 
   assign run_n_next    = nonempty_next & (width_next >= SPAN_N);
+  assign run_2n_next   = nonempty_next & (width_next >= SPAN_2N);
   assign run_long_next = nonempty_next & (width_next >= SPAN_LONG);
 
   always @(posedge clk) begin

@@ -45,7 +45,7 @@ class ModeFsm:
             bad1, bad2 = bad1 or m1, bad2 or m2
             if bad1 and bad2:
                 flush = True
-            elif hyp_ready and ((run1.run_n and run2.run_n) or run1.run_long):
+            elif hyp_ready and ((run1.run_2n and run2.run_2n) or run1.run_long):
                 mode = Mode.NORMAL if run2.run_n else Mode.REDUCED_1
             elif hyp_ready and run2.run_long:
                 mode = Mode.NORMAL if run1.run_n else Mode.REDUCED_2

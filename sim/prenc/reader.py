@@ -125,7 +125,7 @@ class Reader:
     def _illegal(self, quarter: int) -> None:
         self.quarter = quarter
         self.have_last = False
-        none = TrackRun(False, False)
+        none = TrackRun(False, False, False)
         self.fsm.next(True, False, False, False, self.slot, True, none, none)
         self.fsm.commit()
         self._restart()

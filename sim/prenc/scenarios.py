@@ -57,7 +57,7 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
     v = max_speed(filter_len)
     length = 1 << n
     start = float(rng.uniform(0, length))
-    lock = 3 * n + 4                       # slots of travel that surely verify
+    lock = 4 * n + 4                       # slots of travel that surely verify
     lock_clocks = int(lock / v) + 200
     walk = dict(max_speed=v, seed=seed, knot_seconds=int(8 / v))
 
@@ -69,7 +69,7 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
     def add(name: str, what: str, t: Trajectory, faults: Sequence = ()) -> None:
         out.append(Scenario(name, what, t, list(faults)))
 
-    add("start_at_rest_cw", "rest, then CW: start-up needs 2N-1 slots",
+    add("start_at_rest_cw", "rest, then CW: start-up needs 3N-1 slots",
         traj().rest(300).constant(v, lock_clocks).rest(100).constant(-v, 2000))
     add("start_moving_ccw", "moving CCW from the first clock",
         traj().constant(-v, lock_clocks + 2000))

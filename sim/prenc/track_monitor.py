@@ -22,6 +22,7 @@ def default_run_long(n: int) -> int:
 class TrackRun(NamedTuple):
     run_n: bool
     run_long: bool
+    run_2n: bool = False
 
 
 class TrackMonitor:
@@ -82,7 +83,8 @@ class TrackMonitor:
         self._next = (lo, hi, nonempty)
         span = self.span(lo, hi)
         self._errors_next = self.errors + int(check and mismatch)
-        return TrackRun(nonempty and span >= self.n, nonempty and span >= self.run_long)
+        return TrackRun(nonempty and span >= self.n, nonempty and span >= self.run_long,
+                        nonempty and span >= min(2 * self.n, 1 << self.n))
 
     def commit(self) -> None:
         self.lo, self.hi, self.nonempty = self._next

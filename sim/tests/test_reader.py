@@ -32,7 +32,7 @@ def test_reference_never_outputs_a_wrong_valid_position(n, filter_len):
             assert valid_steps > 0, f"{name}: never valid"
 
 
-def test_start_up_takes_2n_minus_1_slots_on_a_clean_disc():
+def test_start_up_takes_3n_minus_1_slots_on_a_clean_disc():
     n = 10
     sc = scenarios(n, 0, seed=3)["start_moving_ccw"]
     reader = Reader(Code(n))
@@ -40,7 +40,7 @@ def test_start_up_takes_2n_minus_1_slots_on_a_clean_disc():
         reader.event(ev)
         if reader.fsm.valid:
             break
-    assert reader.strobes == 2 * n  # N to form the word, N checks: 2N - 1 slots moved
+    assert reader.strobes == 3 * n  # N to form the word, 2N checks: 3N - 1 slots moved
 
 
 def test_contaminated_track_stays_reduced_and_a_one_time_misread_returns_to_normal():

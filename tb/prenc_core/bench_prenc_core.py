@@ -48,7 +48,7 @@ async def campaign(dut):
             faults.append(DeadHead(int(rng.integers(1, 3)), str(rng.choice(["stuck0", "stuck1", "noise"])),
                                    start_clock=int(rng.integers(0, clocks)), seed=s))
         enc = VirtualEncoder(Disc(n), faults).run(traj)
-        rows, _ = await run_core(dut, enc)
+        rows, _ = await run_core(dut, enc, start_clock=totals["segments"] == 0)
         valid, hyb, _pabs, mode = rows.T
         verdict = judge(enc, valid, hyb, mode, core_latency(filter_len), filter_len=filter_len)
         reader = Reader(Code(n))

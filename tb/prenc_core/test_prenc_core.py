@@ -35,10 +35,16 @@ PINS = ("head1", "head2", "sync_a", "sync_b")
 NAMES = list(scenarios(6, 0))
 
 
-async def run_core(dut, enc, resolution: int = 1):
-    """Drive a run onto the pins; per clock (rising edge, 0-based) the outputs, and
-    per check (mismatch1, mismatch2, mode after, valid after, pos_abs after)."""
+async def run_core(dut, enc, resolution: int = 1, start_clock: bool = True):
+    """Reset, then drive a run onto the pins; per clock (rising edge, 0-based) the
+    outputs, and per check (mismatch1, mismatch2, mode after, valid after, pos_abs
+    after). With start_clock=False the clock is already running (a later run)."""
     events = enc.events()
+    if start_clock:
+        # Rising edge k (0-based, the first at half a period) samples enc clock k.
+        cocotb.start_soon(Clock(dut.clk, PERIOD_NS, unit="ns").start(start_high=False))
+    else:
+        await FallingEdge(dut.clk)
     for pin, value in zip(PINS, events[0][1:]):
         getattr(dut, pin).value = value
     dut.rst.value = 1
@@ -70,8 +76,6 @@ async def run_core(dut, enc, resolution: int = 1):
         await FallingEdge(dut.clk)
         dut.rst.value = 0
 
-    # Rising edge k (0-based, the first at half a period) samples enc clock k.
-    cocotb.start_soon(Clock(dut.clk, PERIOD_NS, unit="ns").start(start_high=False))
     watcher = cocotb.start_soon(monitor())
     cocotb.start_soon(release_reset())
     await RisingEdge(dut.clk)
