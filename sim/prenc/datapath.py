@@ -21,15 +21,13 @@ from .shift_register import ShiftRegister, Word
 
 @dataclass
 class DatapathClock:
-    """Every stage's outputs after one rising edge (`now`: this clock's check,
-    combinational: check, mismatch1, mismatch2)."""
+    """Every stage's outputs after one rising edge."""
 
     clean: list[int]  # head1, head2, a, b after the conditioner
     quad: QuadratureOutput
     strobe: Strobe
     word: Word
     prediction: Prediction
-    now: tuple[int, int, int] = (0, 0, 0)
 
 
 @dataclass
@@ -69,11 +67,7 @@ class Datapath:
                                     break_in=quad_before.illegal, rst=rst)
         quad = self.quadrature.clock(clean_before[2], clean_before[3], rst=rst)
         self._clean = self.conditioner.clock(raw, rst=rst)
-        now = (0, 0, 0)
-        if strobe.strobe and word.full:
-            e1, e2 = expected_heads(self.code, word.word, strobe.cw, strobe.moved)
-            now = (1, int(strobe.head1 != e1), int(strobe.head2 != e2))
-        return DatapathClock(list(self._clean), quad, strobe, word, prediction, now)
+        return DatapathClock(list(self._clean), quad, strobe, word, prediction)
 
     def run(self, enc: EncoderRun, reset_clocks: int = 4) -> list[DatapathClock]:
         """The chain over a whole run; rst is high for the first reset_clocks clocks."""

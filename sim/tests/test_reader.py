@@ -89,7 +89,6 @@ def test_campaign_small_is_reproducible_and_clean():
 
 
 def test_unprotected_reader_outputs_wrong_positions_in_the_demo():
-    enc, chapters = demo_run()
+    enc, _ = demo_run()
     strobes, wrong = unprotected(enc)
     assert strobes > 100 and wrong > 0
-    assert [c for c, _ in chapters] == sorted(c for c, _ in chapters)

@@ -10,8 +10,7 @@ import re
 
 import pytest
 
-from prenc.rom import write_rom
-from runner import RTL, SIM_BUILD
+from runner import RTL, rom_file
 from yosys import synthesize
 
 TOPS = sorted(p.stem for p in RTL.glob("*.f"))
@@ -22,10 +21,7 @@ def parameters_for(top: str) -> dict:
     if "ROM_FILE" not in source:
         return {}
     n = int(re.search(r"parameter\s+integer\s+N\s*=\s*(\d+)", source).group(1))
-    rom = SIM_BUILD / "roms" / f"prenc_rom_n{n}.hex"
-    rom.parent.mkdir(parents=True, exist_ok=True)
-    write_rom(rom, n)
-    return {"ROM_FILE": rom}
+    return {"ROM_FILE": rom_file(n)}
 
 
 @pytest.mark.synth

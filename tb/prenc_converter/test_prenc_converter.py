@@ -16,8 +16,7 @@ from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 from common import clock_and_check, rng, start_clock_and_reset
 from prenc.converter import CONVERTER_LATENCY, Converter
 from prenc.debruijn import Code
-from prenc.rom import write_rom
-from runner import SIM_BUILD, SIMULATORS, run
+from runner import SIM_BUILD, SIMULATORS, rom_file, run
 from yosys import synthesize
 
 TOPLEVEL = "prenc_converter"
@@ -99,17 +98,10 @@ async def latency_and_reset(dut):
 # -- pytest entry points ---------------------------------------------------------
 
 
-def rom_for(n: int, fmt: str = "hex") -> Path:
-    path = SIM_BUILD / "roms" / f"prenc_rom_n{n}.{fmt}"
-    path.parent.mkdir(parents=True, exist_ok=True)
-    write_rom(path, n, None, fmt)
-    return path
-
-
 @pytest.mark.parametrize("simulator", SIMULATORS)
 @pytest.mark.parametrize("n", [4, 6, 10, 12])
 def test_prenc_converter(simulator, n):
-    run(__file__, TOPLEVEL, simulator, parameters={"N": n, "ROM_FILE": rom_for(n)})
+    run(__file__, TOPLEVEL, simulator, parameters={"N": n, "ROM_FILE": rom_file(n)})
 
 
 BAD_ROMS = SIM_BUILD / "roms" / "bad"
@@ -148,7 +140,7 @@ def test_bad_rom_file_stops_the_simulation(simulator, case, message, capfd):
 @pytest.mark.parametrize("n", [1, 25])
 def test_illegal_n_stops_elaboration(simulator, n, capfd):
     with pytest.raises((SystemExit, RuntimeError)):  # a failed build raises RuntimeError
-        run(__file__, TOPLEVEL, simulator, parameters={"N": n, "ROM_FILE": rom_for(4)})
+        run(__file__, TOPLEVEL, simulator, parameters={"N": n, "ROM_FILE": rom_file(4)})
     out = capfd.readouterr()
     assert "prenc_converter_parameter_N_out_of_range_2_to_24" in out.out + out.err
 
@@ -161,7 +153,7 @@ BLOCK_RAM = {"ice40": ("SB_RAM40_4K", 4096), "ecp5": ("DP16KD", 16384)}
 @pytest.mark.parametrize("family", sorted(BLOCK_RAM))
 def test_rom_maps_to_block_ram(family):
     n = 10
-    result = synthesize(TOPLEVEL, family, {"N": n, "ROM_FILE": rom_for(n)})
+    result = synthesize(TOPLEVEL, family, {"N": n, "ROM_FILE": rom_file(n)})
     cell, bits = BLOCK_RAM[family]
     assert result.cells.get(cell, 0) >= -(-(n << n) // bits), result.cells
     assert not any("LUT" in c for c in result.cells), f"ROM spilled into logic: {result.cells}"
