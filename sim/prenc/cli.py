@@ -4,6 +4,7 @@
     prenc tracks --bits N [--taps a,b,...] [--shift D] [--format txt|csv] -o FILE
     prenc taps   --bits N [--taps a,b,...]
     prenc demo   [--out DIR]
+    prenc host   read|monitor|log|plot ...   (the board over its UART; see prenc.host)
 
 Every error is one line on stderr and a non-zero exit status (2 for a malformed
 command line, 1 for a request that cannot be carried out); no partial file is
@@ -18,6 +19,7 @@ from typing import Sequence
 
 from . import __version__
 from .debruijn import Code
+from .host import HostError
 from .encoder import default_shift
 from .predictor import taps_mask
 from .lfsr import MAX_BITS, MIN_BITS, TapsError, check_bits, check_taps, poly_str, polynomial
@@ -108,6 +110,10 @@ def build_parser() -> argparse.ArgumentParser:
     demo = sub.add_parser("demo", help="generate the default ROM and show the virtual encoder's signals")
     demo.add_argument("--out", default="build/demo", metavar="DIR", help="output folder (default build/demo)")
     demo.set_defaults(func=cmd_demo)
+
+    from .host import add_parser as add_host_parser
+
+    add_host_parser(sub)
     return parser
 
 
@@ -116,6 +122,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         args.func(args)
+    except HostError as exc:
+        sys.stderr.write(f"prenc host: error: {exc}\n")
+        return 1
     except (ValueError, TapsError, OSError) as exc:
         message = str(exc) if not isinstance(exc, OSError) or not exc.filename else f"{exc.filename}: {exc.strerror}"
         sys.stderr.write(f"prenc {args.command}: error: {message}\n")

@@ -1,0 +1,192 @@
+// prenc_board: the reader as it goes on a board, without the board's clock and pins.
+//
+//   encoder pins -> prenc_core -> prenc_host_link (UART to the PC, docs/host-protocol.md)
+//                             -> prenc_ssi       (SSI to a motion controller)
+//                             -> mode LEDs
+//
+// The board tops in constraints/<board>/ add the PLL, the power-on reset and the
+// pin names; this module is what the tests simulate (tb/prenc_board).
+//
+// Parameters
+//   N, TAPS, FILTER, ROM_FILE   as prenc_core (N here 4..16: the link sends 2 bytes)
+//   CLK_HZ        clock frequency, a multiple of 1 MHz
+//   BAUD          UART baud rate (default 115200; CLK_HZ / BAUD >= 4, within 2 %)
+//   SSI_HYBRID    1: SSI sends pos_hyb (N+2 bits); 0: pos_abs (N bits)
+//   SSI_MONOFLOP_US   SSI monoflop time in microseconds (default 20)
+//
+// Ports
+//   clk, rst                       one clock; synchronous active-high reset (>= 4 clocks)
+//   head1, head2, sync_a, sync_b   the encoder's outputs (asynchronous)
+//   uart_rx, uart_tx               the host link
+//   ssi_clk, ssi_data, ssi_gray    SSI: clock from the controller, data, 1 = Gray code
+//   led_valid                      pos_valid
+//   led_normal, led_reduced, led_incremental, led_acquire   the mode, one-hot
+//   pos_valid, mode                the core's, for test benches and debug headers
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_board #(
+  parameter integer N               = 10,
+  parameter [31:0]  TAPS            = 32'h0000_0204,
+  parameter integer FILTER          = 2,
+  parameter         ROM_FILE        = "prenc_rom_n10.hex",
+  parameter integer CLK_HZ          = 24000000,
+  parameter integer BAUD            = 115200,
+  parameter integer SSI_HYBRID      = 1,
+  parameter integer SSI_MONOFLOP_US = 20
+) (
+  input  wire       clk,
+  input  wire       rst,
+  input  wire       head1,
+  input  wire       head2,
+  input  wire       sync_a,
+  input  wire       sync_b,
+  input  wire       uart_rx,
+  output wire       uart_tx,
+  input  wire       ssi_clk,
+  output wire       ssi_data,
+  input  wire       ssi_gray,
+  output wire       led_valid,
+  output wire       led_normal,
+  output wire       led_reduced,
+  output wire       led_incremental,
+  output wire       led_acquire,
+  output wire       pos_valid,
+  output wire [2:0] mode
+);
+
+  generate
+    if (N < 4 || N > 16) begin : g_bad_n
+      initial $display("ERROR: %m: parameter N = %0d is out of range 4..16", N);
+      prenc_board_parameter_N_out_of_range_4_to_16 u_stop ();
+    end
+    if (SSI_HYBRID < 0 || SSI_HYBRID > 1) begin : g_bad_ssi_hybrid
+      initial $display("ERROR: %m: parameter SSI_HYBRID = %0d must be 0 or 1", SSI_HYBRID);
+      prenc_board_parameter_SSI_HYBRID_must_be_0_or_1 u_stop ();
+    end
+    if (SSI_MONOFLOP_US < 1 || SSI_MONOFLOP_US > 1000) begin : g_bad_monoflop
+      initial $display("ERROR: %m: parameter SSI_MONOFLOP_US = %0d is out of range 1..1000", SSI_MONOFLOP_US);
+      prenc_board_parameter_SSI_MONOFLOP_US_out_of_range_1_to_1000 u_stop ();
+    end
+  endgenerate
+
+  wire [N-1:0]  pos_abs;
+  wire [N+1:0]  pos_hyb;
+  wire          valid;
+  wire [2:0]    mode_now;
+  wire [N+1:0]  position;
+  wire [31:0]   incremental;
+  wire          direction;
+  wire [N-1:0]  track1_pos;
+  wire          track1_valid;
+  wire [N-1:0]  track2_pos;
+  wire          track2_valid;
+  wire [15:0]   track1_errors;
+  wire [15:0]   track2_errors;
+  wire [15:0]   sync_errors;
+  wire          clear_errors;
+
+  prenc_core #(
+    .N           (N),
+    .TAPS        (TAPS),
+    .FILTER      (FILTER),
+    .ROM_FILE    (ROM_FILE),
+    .COUNT_WIDTH (32),
+    .ERROR_WIDTH (16)
+  ) u_core (
+    .clk           (clk),
+    .rst           (rst),
+    .head1         (head1),
+    .head2         (head2),
+    .sync_a        (sync_a),
+    .sync_b        (sync_b),
+    .resolution    (1'b1),
+    .clear_errors  (clear_errors),
+    .pos_abs       (pos_abs),
+    .pos_hyb       (pos_hyb),
+    .pos_valid     (valid),
+    .mode          (mode_now),
+    .position      (position),
+    .incremental   (incremental),
+    .direction     (direction),
+    .track1_pos    (track1_pos),
+    .track1_valid  (track1_valid),
+    .track2_pos    (track2_pos),
+    .track2_valid  (track2_valid),
+    .track1_errors (track1_errors),
+    .track2_errors (track2_errors),
+    .sync_errors   (sync_errors)
+  );
+
+  wire [15:0] link_errors;
+  wire        snapshot;
+
+  prenc_host_link #(
+    .N      (N),
+    .CLK_HZ (CLK_HZ),
+    .BAUD   (BAUD)
+  ) u_link (
+    .clk           (clk),
+    .rst           (rst),
+    .rx            (uart_rx),
+    .tx            (uart_tx),
+    .pos_abs       (pos_abs),
+    .pos_hyb       (pos_hyb),
+    .pos_valid     (valid),
+    .mode          (mode_now),
+    .direction     (direction),
+    .incremental   (incremental),
+    .track1_pos    (track1_pos),
+    .track1_valid  (track1_valid),
+    .track2_pos    (track2_pos),
+    .track2_valid  (track2_valid),
+    .track1_errors (track1_errors),
+    .track2_errors (track2_errors),
+    .sync_errors   (sync_errors),
+    .clear_errors  (clear_errors),
+    .link_errors   (link_errors),
+    .snapshot      (snapshot)
+  );
+
+  localparam integer SSI_WIDTH = (SSI_HYBRID == 1) ? N + 2 : N;
+  wire [SSI_WIDTH-1:0] ssi_position;
+  wire                 ssi_busy;
+
+  generate
+    if (SSI_HYBRID == 1) begin : g_ssi_hybrid
+      assign ssi_position = pos_hyb;
+    end else begin : g_ssi_abs
+      assign ssi_position = pos_abs;
+    end
+  endgenerate
+
+  prenc_ssi #(
+    .WIDTH     (SSI_WIDTH),
+    .ERROR_BIT (1),
+    .MONOFLOP  (SSI_MONOFLOP_US * (CLK_HZ / 1000000))
+  ) u_ssi (
+    .clk      (clk),
+    .rst      (rst),
+    .position (ssi_position),
+    .valid    (valid),
+    .gray     (ssi_gray),
+    .ssi_clk  (ssi_clk),
+    .ssi_data (ssi_data),
+    .busy     (ssi_busy)
+  );
+
+  assign led_valid       = valid;
+  assign led_acquire     = (mode_now == 3'd0);
+  assign led_normal      = (mode_now == 3'd1);
+  assign led_reduced     = (mode_now == 3'd2) | (mode_now == 3'd3);
+  assign led_incremental = (mode_now == 3'd4);
+  assign pos_valid       = valid;
+  assign mode            = mode_now;
+
+  wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy};
+
+endmodule
+
+`resetall

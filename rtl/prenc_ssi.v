@@ -1,0 +1,127 @@
+// prenc_ssi: SSI output, the synchronous serial interface of absolute encoders.
+//
+// The controller drives the clock (ssi_clk, idle high); the encoder drives data
+// (ssi_data, idle high):
+//
+//   ssi_clk  ‾‾‾‾\__/‾‾\__/‾‾\__ ... __/‾‾\__/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾
+//   ssi_data ‾‾‾‾‾‾‾‾| MSB | ... |  LSB | ERR |_____ monoflop ______/‾‾‾‾‾
+//                ^ first falling edge: the position and its error bit are latched
+//
+// - The first falling edge latches `position` (Gray-coded when `gray` is high) and
+//   the error bit (1 when `valid` is low: the position must not be used).
+// - Each rising edge puts the next bit on ssi_data, MSB first, the error bit last
+//   (ERROR_BIT = 1); the controller samples on the falling edges, so a frame of
+//   B bits takes B + 1 clock pulses.
+// - After the last bit, and on any further clock pulse, ssi_data is low; when the
+//   clock has stayed high for the monoflop time (MONOFLOP clocks), ssi_data goes
+//   high again and the next falling edge latches a new position. A frame that
+//   stops early also ends at the monoflop time.
+// - ssi_clk passes a two-flop synchronizer: data follows a rising edge of ssi_clk
+//   by at most 4 clocks, so a half period of ssi_clk must be longer than that
+//   (at 24 MHz, up to about 2 MHz SSI clock).
+//
+// Parameters
+//   WIDTH      position bits, 1..32
+//   ERROR_BIT  1: append the error bit; 0: position bits only
+//   MONOFLOP   monoflop time in clocks, >= 2 (typically 20 us)
+//
+// Ports
+//   clk, rst          one clock; synchronous active-high reset
+//   position, valid   what is latched
+//   gray              1: Gray code, 0: binary (sampled at the latch)
+//   ssi_clk           the controller's clock (asynchronous)
+//   ssi_data          the data line
+//   busy              a frame is in progress (latch to end of monoflop)
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_ssi #(
+  parameter integer WIDTH     = 12,
+  parameter integer ERROR_BIT = 1,
+  parameter integer MONOFLOP  = 480
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire [WIDTH-1:0] position,
+  input  wire             valid,
+  input  wire             gray,
+  input  wire             ssi_clk,
+  output wire             ssi_data,
+  output wire             busy
+);
+
+  generate
+    if (WIDTH < 1 || WIDTH > 32) begin : g_bad_width
+      initial $display("ERROR: %m: parameter WIDTH = %0d is out of range 1..32", WIDTH);
+      prenc_ssi_parameter_WIDTH_out_of_range_1_to_32 u_stop ();
+    end
+    if (ERROR_BIT < 0 || ERROR_BIT > 1) begin : g_bad_error_bit
+      initial $display("ERROR: %m: parameter ERROR_BIT = %0d must be 0 or 1", ERROR_BIT);
+      prenc_ssi_parameter_ERROR_BIT_must_be_0_or_1 u_stop ();
+    end
+    if (MONOFLOP < 2 || MONOFLOP > 16777215) begin : g_bad_monoflop
+      initial $display("ERROR: %m: parameter MONOFLOP = %0d is out of range 2..16777215", MONOFLOP);
+      prenc_ssi_parameter_MONOFLOP_out_of_range_2_to_16777215 u_stop ();
+    end
+  endgenerate
+
+  localparam integer BITS = WIDTH + 1;  // the shift register always has room for the error bit
+  localparam [31:0] MONO_32 = MONOFLOP - 1;
+  localparam [23:0] MONO    = MONO_32[23:0];
+
+  reg              clk_q1;
+  reg              clk_q2;
+  reg              clk_q3;
+  reg              active;
+  reg [BITS-1:0]   shift;
+  reg              data_reg;
+  reg [23:0]       timer;
+
+  wire fall = clk_q3 & ~clk_q2;
+  wire rise = ~clk_q3 & clk_q2;
+
+  wire [WIDTH-1:0] coded = gray ? (position ^ (position >> 1)) : position;
+  wire [BITS-1:0]  frame = (ERROR_BIT == 1) ? {coded, ~valid} : {1'b0, coded};
+
+  always @(posedge clk) begin
+    clk_q1 <= ssi_clk;
+    clk_q2 <= clk_q1;
+    clk_q3 <= clk_q2;
+    if (!active) begin
+      data_reg <= 1'b1;
+      if (fall) begin
+        active <= 1'b1;
+        shift  <= (ERROR_BIT == 1) ? frame : (frame << 1);
+        timer  <= MONO;
+      end
+    end else begin
+      if (rise) begin
+        data_reg <= shift[BITS-1];
+        shift    <= shift << 1;
+      end
+      if (rise || fall || !clk_q2) begin
+        timer <= MONO;
+      end else if (timer != 24'd0) begin
+        timer <= timer - 24'd1;
+      end else begin
+        active   <= 1'b0;
+        data_reg <= 1'b1;
+      end
+    end
+    if (rst) begin
+      clk_q1   <= 1'b1;
+      clk_q2   <= 1'b1;
+      clk_q3   <= 1'b1;
+      active   <= 1'b0;
+      data_reg <= 1'b1;
+    end
+  end
+
+  assign ssi_data = data_reg;
+  assign busy     = active;
+
+endmodule
+
+`resetall

