@@ -67,7 +67,8 @@ module prenc_board #(
       prenc_board_parameter_SSI_HYBRID_must_be_0_or_1 u_stop ();
     end
     if (SSI_MONOFLOP_US < 1 || SSI_MONOFLOP_US > 1000) begin : g_bad_monoflop
-      initial $display("ERROR: %m: parameter SSI_MONOFLOP_US = %0d is out of range 1..1000", SSI_MONOFLOP_US);
+      initial $display("ERROR: %m: parameter SSI_MONOFLOP_US = %0d is out of range 1..1000",
+                       SSI_MONOFLOP_US);
       prenc_board_parameter_SSI_MONOFLOP_US_out_of_range_1_to_1000 u_stop ();
     end
   endgenerate

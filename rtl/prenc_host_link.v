@@ -66,6 +66,8 @@ module prenc_host_link #(
 
   localparam integer CLKS_PER_BIT = (CLK_HZ + BAUD / 2) / BAUD;
   localparam integer CLKS_PER_US  = CLK_HZ / 1000000;
+  localparam integer RATE_ERROR   = (CLKS_PER_BIT * BAUD > CLK_HZ) ? CLKS_PER_BIT * BAUD - CLK_HZ
+                                                                   : CLK_HZ - CLKS_PER_BIT * BAUD;
 
   generate
     if (N < 4 || N > 16) begin : g_bad_n
@@ -80,8 +82,7 @@ module prenc_host_link #(
       initial $display("ERROR: %m: parameter BAUD = %0d needs CLK_HZ / BAUD >= 4 (CLK_HZ = %0d)",
                        BAUD, CLK_HZ);
       prenc_host_link_parameter_BAUD_too_high_for_CLK_HZ u_stop ();
-    end else if ((CLKS_PER_BIT * BAUD > CLK_HZ ? CLKS_PER_BIT * BAUD - CLK_HZ
-                                                : CLK_HZ - CLKS_PER_BIT * BAUD) * 50 > CLK_HZ) begin : g_bad_rate
+    end else if (RATE_ERROR * 50 > CLK_HZ) begin : g_bad_rate
       initial $display("ERROR: %m: parameter BAUD = %0d is more than 2 %% off at CLK_HZ = %0d",
                        BAUD, CLK_HZ);
       prenc_host_link_parameter_BAUD_not_reachable_within_2_percent u_stop ();
@@ -166,7 +167,8 @@ module prenc_host_link #(
 
   wire [2:0]  req_kind   = req_payload[2:0];
   wire        kind_ok    = (req_payload[7:3] == 5'd0) && (req_kind <= KIND_LAST);
-  wire [31:0] req_period = {req_payload[15:8], req_payload[23:16], req_payload[31:24], req_payload[39:32]};
+  wire [31:0] req_period = {req_payload[15:8], req_payload[23:16],
+                            req_payload[31:24], req_payload[39:32]};
   wire        can_start  = ~tx_busy & ~start_reg;
 
   always @(posedge clk) begin

@@ -30,7 +30,8 @@ module prenc_uart_tx #(
 
   generate
     if (CLKS_PER_BIT < 4 || CLKS_PER_BIT > 65535) begin : g_bad_clks_per_bit
-      initial $display("ERROR: %m: parameter CLKS_PER_BIT = %0d is out of range 4..65535", CLKS_PER_BIT);
+      initial $display("ERROR: %m: parameter CLKS_PER_BIT = %0d is out of range 4..65535",
+                       CLKS_PER_BIT);
       prenc_uart_tx_parameter_CLKS_PER_BIT_out_of_range_4_to_65535 u_stop ();
     end
   endgenerate
