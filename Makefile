@@ -5,6 +5,8 @@
 #   make bench   benchmarks, side by side in one run
 #   make lint    verilator --lint-only -Wall on every top's file list
 #   make rom     the default conversion ROM into build/rom/
+#   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200]
+#                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/
 #
 # Set-up is automatic: a virtual environment with pinned versions (requirements.txt)
 # and the Debian packages the simulators need, installed only when missing.
@@ -23,7 +25,10 @@ DEB_PACKAGES := iverilog liblz4-dev g++ make
 VERILATOR_ROOT_OF = $$($(PY) -c 'import os, verilator; print(os.path.dirname(verilator.__file__))')
 WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT_OF)/bin:$$PATH"
 
-.PHONY: all demo test bench lint rom sysdeps venv clean distclean
+BOARD ?= icebreaker
+BITS  ?= 10
+
+.PHONY: all demo test bench lint rom synth sysdeps venv clean distclean
 
 all: test
 
@@ -62,6 +67,9 @@ lint: $(STAMP)
 	  echo "verilator --lint-only -Wall -f rtl/$$f"; \
 	  $(WITH_VERILATOR) verilator --lint-only -Wall -f $$f || exit 1; \
 	done
+
+synth: $(STAMP)
+	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD))
 
 rom: $(STAMP)
 	mkdir -p build/rom

@@ -130,14 +130,25 @@ module prenc_track_monitor #(
     end
   end
 
+  // Next interval. Its width can only stay, grow by one slot, or restart at one
+  // slot, so the run flags are chosen from comparisons of the registered width
+  // (computed in parallel with the slot comparisons, not after them): the flags'
+  // path is one comparison and a multiplexer, which is what the core's Fmax needs.
   reg [N-1:0] lo_next;
   reg [N-1:0] hi_next;
   reg         nonempty_next;
+  reg         grow;     // the width grows by one
+  reg         restart;  // the interval restarts at one slot
+
+  wire extends_hi = (slot == hi_reg + 1'b1);
+  wire extends_lo = (slot == lo_reg - 1'b1);
 
   always @* begin
     lo_next       = lo_reg;
     hi_next       = hi_reg;
     nonempty_next = nonempty_reg;
+    grow          = 1'b0;
+    restart       = 1'b0;
     if (check && mismatch) begin
       nonempty_next = 1'b0;
     end else if (check && in_fed) begin
@@ -147,15 +158,19 @@ module prenc_track_monitor #(
         lo_next       = slot;
         hi_next       = slot;
         nonempty_next = 1'b1;
+        restart       = 1'b1;
       end else if (in_run) begin
         nonempty_next = 1'b1;
-      end else if (slot == hi_reg + 1'b1) begin
+      end else if (extends_hi) begin
         hi_next = slot;
-      end else if (slot == lo_reg - 1'b1) begin
+        grow    = 1'b1;
+      end else if (extends_lo) begin
         lo_next = slot;
+        grow    = 1'b1;
       end else begin
         lo_next = slot;
         hi_next = slot;
+        restart = 1'b1;
       end
     end
     if (clear) begin
@@ -163,11 +178,19 @@ module prenc_track_monitor #(
     end
   end
 
-  wire [N:0] width_next = {1'b0, hi_next - lo_next};
+  // width >= SPAN, and width + 1 >= SPAN (the width never reaches 2^N - 1 and grows:
+  // a full circle is always in_run). A restarted interval has width 0 < every span.
+  wire [N:0] width_ext = {1'b0, width};
+  wire       keep_n    = (width_ext >= SPAN_N);
+  wire       keep_2n   = (width_ext >= SPAN_2N);
+  wire       keep_long = (width_ext >= SPAN_LONG);
+  wire       grow_n    = (width_ext + 1'b1 >= SPAN_N);
+  wire       grow_2n   = (width_ext + 1'b1 >= SPAN_2N);
+  wire       grow_long = (width_ext + 1'b1 >= SPAN_LONG);
 
-  assign run_n_next    = nonempty_next & (width_next >= SPAN_N);
-  assign run_2n_next   = nonempty_next & (width_next >= SPAN_2N);
-  assign run_long_next = nonempty_next & (width_next >= SPAN_LONG);
+  assign run_n_next    = nonempty_next & ~restart & (grow ? grow_n : keep_n);
+  assign run_2n_next   = nonempty_next & ~restart & (grow ? grow_2n : keep_2n);
+  assign run_long_next = nonempty_next & ~restart & (grow ? grow_long : keep_long);
 
   always @(posedge clk) begin
     lo_reg       <= lo_next;

@@ -77,8 +77,8 @@ class Board:
 
 
 BOARDS = {
-    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 48.0),
-    "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 100.0),
+    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 18.0),
+    "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 50.0),
 }
 
 
@@ -135,6 +135,7 @@ def rom_for(bits: int, out: Path) -> Path:
     """The default disc's ROM, written by the code behind `prenc rom`."""
     from prenc.rom import write_rom
 
+    out.mkdir(parents=True, exist_ok=True)
     path = out / f"prenc_rom_n{bits}.hex"
     write_rom(path, bits, None, "hex")
     return path
@@ -170,7 +171,10 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
     t0 = time.perf_counter()
     result = Result(top=top, target=target_name, bits=int(parameters.get("N", 10)))
     netlist, stat = out / f"{top}.json", out / "stat.json"
-    script = [f"read_verilog -defer {rel(p)}" for p in sources]
+    script = [f"read_verilog -lib -specify +/{target.family}/cells_sim.v"]
+    if target.family == "ecp5":
+        script.append("read_verilog -lib +/ecp5/cells_bb.v")  # EHXPLLL
+    script += [f"read_verilog -defer {rel(p)}" for p in sources]
     if parameters:
         script.append("chparam " + " ".join(f"-set {k} {_literal(v)}" for k, v in parameters.items()) + f" {top}")
     script += [
@@ -198,9 +202,13 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
         cmd += ["--textcfg", rel(placed)] + (["--lpf", rel(pins)] if pins else [])
     try:
         _run("nextpnr", cmd, out / "nextpnr.log")
-    finally:
-        if report.exists():
-            _read_report(json.loads(report.read_text()), result)
+        failure = None
+    except FlowError as err:
+        failure = err
+    if report.exists():
+        _read_report(json.loads(report.read_text()), result)
+    if failure is not None and not (result.clocks and not result.timing_met):
+        raise failure
     if not result.timing_met:
         worst = min(result.clocks.items(), key=lambda kv: kv[1]["achieved"] - kv[1]["constraint"], default=None)
         if worst is None:

@@ -1,0 +1,21 @@
+// Sources of prenc_icebreaker, relative to this folder.
+../../rtl/prenc_input_conditioner.v
+../../rtl/prenc_quadrature.v
+../../rtl/prenc_sampler.v
+../../rtl/prenc_shift_register.v
+../../rtl/prenc_predictor.v
+../../rtl/prenc_datapath.v
+../../rtl/prenc_converter.v
+../../rtl/prenc_position.v
+../../rtl/prenc_track_monitor.v
+../../rtl/prenc_mode_fsm.v
+../../rtl/prenc_core.v
+../../rtl/prenc_crc16.v
+../../rtl/prenc_uart_rx.v
+../../rtl/prenc_uart_tx.v
+../../rtl/prenc_frame_rx.v
+../../rtl/prenc_frame_tx.v
+../../rtl/prenc_host_link.v
+../../rtl/prenc_ssi.v
+../../rtl/prenc_board.v
+prenc_icebreaker.v

@@ -1,0 +1,131 @@
+// prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
+//
+//   12 MHz (pin 35) -> SB_PLL40_PAD -> 18 MHz system clock: 3 Mbaud is 6 clocks per bit,
+//   1 Mbaud 18, 115200 baud 156 (0.2 % slow). The UP5K closes the core at about 23 MHz.
+//   power-on reset: held until the PLL locks, then 16 more clocks; BTN_N resets too
+//   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
+//           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
+//   UART:   RX pin 6, TX pin 9, to the on-board FTDI (second interface)
+//   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
+//           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
+//
+// Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board. The UP5K's 30 block
+// RAMs (120 kbit) hold the ROM up to N = 12.
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_icebreaker #(
+  parameter integer N        = 10,
+  parameter [31:0]  TAPS     = 32'h0000_0204,
+  parameter integer FILTER   = 2,
+  parameter         ROM_FILE = "prenc_rom_n10.hex",
+  parameter integer BAUD     = 115200
+) (
+  input  wire CLK,
+  input  wire BTN_N,
+  input  wire RX,
+  output wire TX,
+  input  wire P1A1,
+  input  wire P1A2,
+  input  wire P1A3,
+  input  wire P1A4,
+  input  wire P1A7,
+  output wire P1A8,
+  input  wire P1A9,
+  output wire LEDR_N,
+  output wire LEDG_N,
+  output wire LED1,
+  output wire LED2,
+  output wire LED3,
+  output wire LED4,
+  output wire LED5
+);
+
+  localparam integer CLK_HZ = 18000000;
+
+  wire clk;
+  wire locked;
+
+  // 12 MHz x 48 / 2^5 = 18 MHz (yowasp-icepll -i 12 -o 18): VCO 576 MHz.
+  SB_PLL40_PAD #(
+    .FEEDBACK_PATH ("SIMPLE"),
+    .DIVR          (4'b0000),
+    .DIVF          (7'b0101111),
+    .DIVQ          (3'b101),
+    .FILTER_RANGE  (3'b001)
+  ) u_pll (
+    .PACKAGEPIN   (CLK),
+    .PLLOUTGLOBAL (clk),
+    .LOCK         (locked),
+    .RESETB       (1'b1),
+    .BYPASS       (1'b0)
+  );
+
+  // Power-on and button reset, synchronous to the PLL clock.
+  reg [1:0] button_sync = 2'b00;
+  reg [4:0] reset_count = 5'd0;
+  reg       rst         = 1'b1;
+
+  always @(posedge clk) begin
+    button_sync <= {button_sync[0], BTN_N};
+    if (!locked || !button_sync[1]) begin
+      reset_count <= 5'd0;
+      rst         <= 1'b1;
+    end else if (reset_count != 5'd31) begin
+      reset_count <= reset_count + 5'd1;
+    end else begin
+      rst <= 1'b0;
+    end
+  end
+
+  wire       pos_valid;
+  wire [2:0] mode;
+  wire       led_valid;
+  wire       led_normal;
+  wire       led_reduced;
+  wire       led_incremental;
+  wire       led_acquire;
+
+  prenc_board #(
+    .N        (N),
+    .TAPS     (TAPS),
+    .FILTER   (FILTER),
+    .ROM_FILE (ROM_FILE),
+    .CLK_HZ   (CLK_HZ),
+    .BAUD     (BAUD)
+  ) u_board (
+    .clk             (clk),
+    .rst             (rst),
+    .head1           (P1A1),
+    .head2           (P1A2),
+    .sync_a          (P1A3),
+    .sync_b          (P1A4),
+    .uart_rx         (RX),
+    .uart_tx         (TX),
+    .ssi_clk         (P1A7),
+    .ssi_data        (P1A8),
+    .ssi_gray        (P1A9),
+    .led_valid       (led_valid),
+    .led_normal      (led_normal),
+    .led_reduced     (led_reduced),
+    .led_incremental (led_incremental),
+    .led_acquire     (led_acquire),
+    .pos_valid       (pos_valid),
+    .mode            (mode)
+  );
+
+  assign LEDG_N = ~led_valid;
+  assign LEDR_N = led_valid;
+  assign LED1   = led_acquire;
+  assign LED2   = led_normal;
+  assign LED3   = led_reduced;
+  assign LED4   = led_incremental;
+  assign LED5   = pos_valid;
+
+  wire unused_ok = &{1'b0, mode};
+
+endmodule
+
+`resetall

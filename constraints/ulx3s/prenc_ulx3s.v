@@ -1,0 +1,136 @@
+// prenc_ulx3s: the reader on a ULX3S (ECP5 LFE5U-85F, 25 MHz oscillator).
+//
+//   25 MHz (G2) -> EHXPLLL -> 50 MHz system clock (x2; an ECP5 PLL cannot make
+//   48 MHz from 25 MHz with a legal PFD). Baud rates: 115200 (434 clocks per bit),
+//   1 and 2 Mbaud exact; 3 Mbaud is 17 clocks per bit, 2 % fast.
+//   power-on reset: held until the PLL locks, then 32 clocks; FIRE1 (btn[1]) resets too
+//   J1 header: GP0 head1, GN0 head2, GP1 sync A, GN1 sync B            (inputs, 3.3 V)
+//              GP2 SSI clock in, GN2 SSI data out, GP3 SSI Gray select (pulled up: Gray)
+//   UART:      ftdi_txd (M1) in, ftdi_rxd (L4) out, the on-board FT231X
+//   LEDs:      led[0] pos_valid, led[1] ACQUIRE, led[2] NORMAL, led[3] REDUCED,
+//              led[4] INCREMENTAL
+//
+// Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board.
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_ulx3s #(
+  parameter integer N        = 10,
+  parameter [31:0]  TAPS     = 32'h0000_0204,
+  parameter integer FILTER   = 2,
+  parameter         ROM_FILE = "prenc_rom_n10.hex",
+  parameter integer BAUD     = 115200
+) (
+  input  wire       clk_25mhz,
+  input  wire [1:1] btn,
+  input  wire       ftdi_txd,
+  output wire       ftdi_rxd,
+  input  wire [3:0] gp,
+  inout  wire [3:0] gn,
+  output wire [7:0] led,
+  output wire       wifi_gpio0
+);
+
+  localparam integer CLK_HZ = 50000000;
+
+  wire clk;
+  wire locked;
+
+  // 25 MHz x 2 = 50 MHz (yowasp-ecppll -i 25 -o 50): VCO 600 MHz.
+  (* FREQUENCY_PIN_CLKI="25" *)
+  (* FREQUENCY_PIN_CLKOP="50" *)
+  (* ICP_CURRENT="12" *) (* LPF_RESISTOR="8" *) (* MFG_ENABLE_FILTEROPAMP="1" *) (* MFG_GMCREF_SEL="2" *)
+  EHXPLLL #(
+    .PLLRST_ENA      ("DISABLED"),
+    .INTFB_WAKE      ("DISABLED"),
+    .STDBY_ENABLE    ("DISABLED"),
+    .DPHASE_SOURCE   ("DISABLED"),
+    .OUTDIVIDER_MUXA ("DIVA"),
+    .OUTDIVIDER_MUXB ("DIVB"),
+    .OUTDIVIDER_MUXC ("DIVC"),
+    .OUTDIVIDER_MUXD ("DIVD"),
+    .CLKI_DIV        (1),
+    .CLKOP_ENABLE    ("ENABLED"),
+    .CLKOP_DIV       (12),
+    .CLKOP_CPHASE    (5),
+    .CLKOP_FPHASE    (0),
+    .FEEDBK_PATH     ("CLKOP"),
+    .CLKFB_DIV       (2)
+  ) u_pll (
+    .RST          (1'b0),
+    .STDBY        (1'b0),
+    .CLKI         (clk_25mhz),
+    .CLKOP        (clk),
+    .CLKFB        (clk),
+    .CLKINTFB     (),
+    .PHASESEL0    (1'b0),
+    .PHASESEL1    (1'b0),
+    .PHASEDIR     (1'b1),
+    .PHASESTEP    (1'b1),
+    .PHASELOADREG (1'b1),
+    .PLLWAKESYNC  (1'b0),
+    .ENCLKOP      (1'b0),
+    .LOCK         (locked)
+  );
+
+  // Power-on and button reset, synchronous to the PLL clock.
+  reg [1:0] button_sync = 2'b00;
+  reg [4:0] reset_count = 5'd0;
+  reg       rst         = 1'b1;
+
+  always @(posedge clk) begin
+    button_sync <= {button_sync[0], btn[1]};
+    if (!locked || button_sync[1]) begin
+      reset_count <= 5'd0;
+      rst         <= 1'b1;
+    end else if (reset_count != 5'd31) begin
+      reset_count <= reset_count + 5'd1;
+    end else begin
+      rst <= 1'b0;
+    end
+  end
+
+  wire       pos_valid;
+  wire [2:0] mode;
+  wire       ssi_data;
+
+  prenc_board #(
+    .N        (N),
+    .TAPS     (TAPS),
+    .FILTER   (FILTER),
+    .ROM_FILE (ROM_FILE),
+    .CLK_HZ   (CLK_HZ),
+    .BAUD     (BAUD)
+  ) u_board (
+    .clk             (clk),
+    .rst             (rst),
+    .head1           (gp[0]),
+    .head2           (gn[0]),
+    .sync_a          (gp[1]),
+    .sync_b          (gn[1]),
+    .uart_rx         (ftdi_txd),
+    .uart_tx         (ftdi_rxd),
+    .ssi_clk         (gp[2]),
+    .ssi_data        (ssi_data),
+    .ssi_gray        (gp[3]),
+    .led_valid       (led[0]),
+    .led_acquire     (led[1]),
+    .led_normal      (led[2]),
+    .led_reduced     (led[3]),
+    .led_incremental (led[4]),
+    .pos_valid       (pos_valid),
+    .mode            (mode)
+  );
+
+  assign gn[2]      = ssi_data;
+  assign gn[3]      = 1'bz;
+  assign led[7:5]   = 3'b000;
+  assign wifi_gpio0 = 1'b1;  // keep the ESP32 from resetting the FPGA
+
+  wire unused_ok = &{1'b0, pos_valid, mode};
+
+endmodule
+
+`resetall

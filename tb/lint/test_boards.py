@@ -1,0 +1,45 @@
+"""The board builds: `make synth` for each board (scripts/synth.py), and its failures.
+
+Each board must place, route and meet its clock with the default N = 10 ROM, and
+the flow must fail (not warn) on a missing ROM and on a clock it cannot meet.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import pytest
+
+from runner import REPO, SIM_BUILD
+
+sys.path.insert(0, str(REPO / "scripts"))
+import synth  # noqa: E402
+
+pytestmark = [pytest.mark.synth, pytest.mark.xdist_group("yowasp")]
+
+
+@pytest.mark.parametrize("board", sorted(synth.BOARDS))
+def test_board_builds_and_meets_timing(board):
+    out = SIM_BUILD / "boards" / board
+    result = synth.board_build(synth.BOARDS[board], 10, out)
+    synth.write_report(result, out)
+    target = synth.TARGETS[result.target]
+    assert result.timing_met
+    assert (REPO / result.bitstream).stat().st_size > 10_000
+    assert result.used(target.brams)[0] >= 1, "the ROM must be in block RAM"
+    assert result.flip_flops > 200
+    assert "Fmax" in (out / "report.md").read_text()
+
+
+def test_a_missing_rom_fails_the_build():
+    out = SIM_BUILD / "boards" / "missing-rom"
+    with pytest.raises(synth.FlowError, match="ROM file .* not found"):
+        synth.build("prenc_core", synth.file_list(synth.RTL / "prenc_core.f"), "ice40-hx8k",
+                    {"N": 10, "ROM_FILE": out / "no_such_rom.hex"}, 50.0, out, bitstream=False)
+
+
+def test_a_clock_that_is_not_met_fails_the_build():
+    out = SIM_BUILD / "boards" / "too-fast"
+    with pytest.raises(synth.FlowError, match="timing failed: clock .* needs 400.0 MHz"):
+        synth.build("prenc_ssi", synth.file_list(synth.RTL / "prenc_ssi.f"), "ice40-hx8k",
+                    {"WIDTH": 32}, 400.0, out, bitstream=False)
