@@ -237,7 +237,8 @@ def _row(answer: Answer, bits: int, t0: float) -> dict:
 
 # --- commands --------------------------------------------------------------------
 
-def cmd_read(args, out: TextIO = sys.stdout) -> None:
+def cmd_read(args, out: TextIO | None = None) -> None:
+    out = out or sys.stdout
     with Board.open(args.port, args.baud, args.timeout) as board:
         board.check_version()
         answer = board.read(KINDS[args.kind])
@@ -255,7 +256,8 @@ def _period_us(rate: float) -> int:
     return max(1, round(1e6 / rate))
 
 
-def cmd_monitor(args, out: TextIO = sys.stdout) -> None:
+def cmd_monitor(args, out: TextIO | None = None) -> None:
+    out = out or sys.stdout
     with Board.open(args.port, args.baud, args.timeout) as board:
         status = board.check_version()
         speed = SpeedMeter(board.bits)
@@ -292,7 +294,8 @@ def cmd_monitor(args, out: TextIO = sys.stdout) -> None:
             board.stop_stream()
 
 
-def cmd_log(args, out: TextIO = sys.stdout, progress: TextIO = sys.stderr) -> None:
+def cmd_log(args, out: TextIO | None = None, progress: TextIO | None = None) -> None:
+    out, progress = out or sys.stdout, progress or sys.stderr
     kind = KINDS[args.kind]
     path = Path(args.out)
     with Board.open(args.port, args.baud, args.timeout) as board:
@@ -331,7 +334,8 @@ def cmd_log(args, out: TextIO = sys.stdout, progress: TextIO = sys.stderr) -> No
     out.write(f"wrote {rows} rows to {path}\n")
 
 
-def cmd_plot(args, out: TextIO = sys.stdout) -> None:
+def cmd_plot(args, out: TextIO | None = None) -> None:
+    out = out or sys.stdout
     path = Path(args.log)
     if not path.exists():
         raise HostError(f"{path}: log not found")
