@@ -58,7 +58,7 @@ def test_every_guaranteed_corruption_is_rejected_and_counted(seed, data):
     parser = FrameParser()
     assert parser.feed(bytes(bits)) == []
     parser.idle()
-    assert parser.errors == 1 and parser.frames == 0
+    assert parser.errors >= 1 and parser.frames == 0  # an A5 inside the rest may start another
 
 
 def test_a_corrupted_length_resynchronises_after_the_timeout():
