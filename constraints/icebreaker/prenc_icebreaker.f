@@ -18,4 +18,5 @@
 ../../rtl/prenc_host_link.v
 ../../rtl/prenc_ssi.v
 ../../rtl/prenc_board.v
+../../rtl/prenc_power_on_reset.v
 prenc_icebreaker.v

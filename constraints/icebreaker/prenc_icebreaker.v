@@ -2,7 +2,7 @@
 //
 //   12 MHz (pin 35) -> SB_PLL40_PAD -> 18 MHz system clock: 3 Mbaud is 6 clocks per bit,
 //   1 Mbaud 18, 115200 baud 156 (0.2 % slow). The UP5K closes the core at about 23 MHz.
-//   power-on reset: held until the PLL locks, then 16 more clocks; BTN_N resets too
+//   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
 //   UART:   RX pin 6, TX pin 9, to the on-board FTDI (second interface)
@@ -64,21 +64,16 @@ module prenc_icebreaker #(
   );
 
   // Power-on and button reset, synchronous to the PLL clock.
-  reg [1:0] button_sync = 2'b00;
-  reg [4:0] reset_count = 5'd0;
-  reg       rst         = 1'b1;
+  wire rst;
 
-  always @(posedge clk) begin
-    button_sync <= {button_sync[0], BTN_N};
-    if (!locked || !button_sync[1]) begin
-      reset_count <= 5'd0;
-      rst         <= 1'b1;
-    end else if (reset_count != 5'd31) begin
-      reset_count <= reset_count + 5'd1;
-    end else begin
-      rst <= 1'b0;
-    end
-  end
+  prenc_power_on_reset #(
+    .HOLD (32)
+  ) u_reset (
+    .clk    (clk),
+    .locked (locked),
+    .button (~BTN_N),
+    .rst    (rst)
+  );
 
   wire       pos_valid;
   wire [2:0] mode;

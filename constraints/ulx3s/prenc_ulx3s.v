@@ -3,7 +3,7 @@
 //   25 MHz (G2) -> EHXPLLL -> 50 MHz system clock (x2; an ECP5 PLL cannot make
 //   48 MHz from 25 MHz with a legal PFD). Baud rates: 115200 (434 clocks per bit),
 //   1 and 2 Mbaud exact; 3 Mbaud is 17 clocks per bit, 2 % fast.
-//   power-on reset: held until the PLL locks, then 32 clocks; FIRE1 (btn[1]) resets too
+//   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; FIRE1 too
 //   J1 header: GP0 head1, GN0 head2, GP1 sync A, GN1 sync B            (inputs, 3.3 V)
 //              GP2 SSI clock in, GN2 SSI data out, GP3 SSI Gray select (pulled up: Gray)
 //   UART:      ftdi_txd (M1) in, ftdi_rxd (L4) out, the on-board FT231X
@@ -76,21 +76,16 @@ module prenc_ulx3s #(
   );
 
   // Power-on and button reset, synchronous to the PLL clock.
-  reg [1:0] button_sync = 2'b00;
-  reg [4:0] reset_count = 5'd0;
-  reg       rst         = 1'b1;
+  wire rst;
 
-  always @(posedge clk) begin
-    button_sync <= {button_sync[0], btn[1]};
-    if (!locked || button_sync[1]) begin
-      reset_count <= 5'd0;
-      rst         <= 1'b1;
-    end else if (reset_count != 5'd31) begin
-      reset_count <= reset_count + 5'd1;
-    end else begin
-      rst <= 1'b0;
-    end
-  end
+  prenc_power_on_reset #(
+    .HOLD (32)
+  ) u_reset (
+    .clk    (clk),
+    .locked (locked),
+    .button (btn[1]),
+    .rst    (rst)
+  );
 
   wire       pos_valid;
   wire [2:0] mode;
