@@ -38,9 +38,15 @@ module prenc_power_on_reset #(
   localparam [31:0] LAST_32 = HOLD - 1;
   localparam [15:0] LAST    = LAST_32[15:0];
 
-  reg [1:0]  button_sync = 2'b11;
-  reg [15:0] count       = 16'd0;
-  reg        rst_reg     = 1'b1;
+  reg [1:0]  button_sync;
+  reg [15:0] count;
+  reg        rst_reg;
+
+  initial begin  // the configuration values
+    button_sync = 2'b11;
+    count       = 16'd0;
+    rst_reg     = 1'b1;
+  end
 
   always @(posedge clk) begin
     button_sync <= {button_sync[0], button};
