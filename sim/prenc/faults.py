@@ -169,7 +169,11 @@ class Glitch:
 
 @dataclass(frozen=True)
 class RandomGlitches:
-    """`count` glitches on a signal at random clocks, widths in [min_width, max_width]."""
+    """Up to `count` glitches on a signal at random clocks, widths in [min_width, max_width].
+
+    Glitches never touch: one that would start within max_width clocks of the
+    previous one's end is dropped, so two short glitches cannot merge into one pulse
+    as long as a filter passes (which would be a real step for any reader)."""
 
     signal: str
     count: int
@@ -189,8 +193,12 @@ class RandomGlitches:
         sig = run.signals[_signal_key(self.signal)]
         starts = rng.integers(0, len(sig), self.count)
         widths = rng.integers(self.min_width, self.max_width + 1, self.count)
-        for start, width in zip(starts.tolist(), widths.tolist()):
+        last_end = None
+        for start, width in sorted(zip(starts.tolist(), widths.tolist())):
+            if last_end is not None and start <= last_end + self.max_width:
+                continue
             sig[start : start + width] ^= 1
+            last_end = start + width - 1
 
 
 @dataclass(frozen=True)
