@@ -237,9 +237,8 @@ def _read_report(report: dict, result: Result) -> None:
     for cell, u in report.get("utilization", {}).items():
         result.utilization[cell] = {"used": int(u["used"]), "available": int(u["available"])}
     paths = report.get("critical_paths", [])
-    if paths:
-        worst = min(paths, key=lambda p: 0)  # nextpnr lists one path per clock pair
-        hops = [s for s in worst.get("path", []) if s.get("type") in ("clk-to-q", "setup", "logic")]
+    if paths:  # nextpnr lists one path per clock pair; the boards have one clock
+        hops = [s for s in paths[0].get("path", []) if s.get("type") in ("clk-to-q", "setup", "logic")]
         if hops:
             result.critical_path = [hops[0].get("from", {}).get("cell", "?"), hops[-1].get("to", {}).get("cell", "?")]
 

@@ -61,8 +61,10 @@ class LinkStats:
 class Board:
     """The board at the other end of a serial port."""
 
-    def __init__(self, port, timeout: float = 1.0, idle_timeout: float = 0.05, name: str = "the board"):
+    def __init__(self, port, timeout: float = 1.0, idle_timeout: float = 0.05, name: str = "the board",
+                 baud: int | None = None):
         self.port = port
+        self.baud = baud
         self.timeout = timeout
         self.idle_timeout = idle_timeout
         self.name = name
@@ -74,9 +76,7 @@ class Board:
 
     @classmethod
     def open(cls, port: str, baud: int = DEFAULT_BAUD, timeout: float = 1.0) -> "Board":
-        board = cls(open_port(port, baud), timeout=timeout, name=port)
-        board.baud = baud
-        return board
+        return cls(open_port(port, baud), timeout=timeout, name=port, baud=baud)
 
     def close(self) -> None:
         self.port.close()
@@ -99,8 +99,7 @@ class Board:
                 return self._pending.pop(0)
             now = time.monotonic()
             if now > deadline:
-                baud = getattr(self, "baud", None)
-                hint = f" (is the board programmed, and is it at {baud} baud?)" if baud else ""
+                hint = f" (is the board programmed, and is it at {self.baud} baud?)" if self.baud else ""
                 raise HostError(f"no answer from {self.name} within {self.timeout:g} s{hint}")
             data = self.port.read(max(1, getattr(self.port, "in_waiting", 0) or 1))
             if data:

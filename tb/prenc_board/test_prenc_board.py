@@ -24,6 +24,7 @@ import json
 import os
 import subprocess
 import sys
+import time
 import tty
 from pathlib import Path
 
@@ -147,8 +148,6 @@ async def host(bridge: Bridge, *args: str, timeout_s: float = 120.0) -> subproce
     cmd = [sys.executable, "-m", "prenc.cli", "host", *args]
     env = dict(os.environ, PYTHONPATH=str(REPO / "sim"))
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    import time
-
     t0 = time.monotonic()
     while proc.poll() is None:
         await Timer(2_000 * PERIOD_NS, unit="ns")
@@ -214,7 +213,8 @@ async def prenc_host_reads_the_true_position_through_a_pty(dut):
     result = await host(bridge, "log", *link_args(bridge), "--out", str(log), "--kind", "hybrid",
                         "--rate", "2000", "--count", "60")
     assert result.returncode == 0, result.stderr
-    assert "crc errors 1" in result.stderr.splitlines()[-1] if result.stderr.strip() else False, result.stderr
+    progress = result.stderr.strip().splitlines()
+    assert progress and "crc errors 1" in progress[-1], result.stderr
     rows = list(csv.DictReader(log.open()))
     assert len(rows) == 60
     for row in rows:
