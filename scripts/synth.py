@@ -69,7 +69,6 @@ class Board:
     top: str
     pins: str  # .pcf or .lpf, relative to constraints/<name>/
     clock_mhz: float  # the design clock (after the board's PLL)
-    baud: int = 115200
 
     @property
     def folder(self) -> Path:
@@ -152,7 +151,8 @@ def _run(step: str, cmd: list[str], log: Path) -> str:
     return text
 
 
-def _literal(value: object) -> str:
+def literal(value: object) -> str:
+    """A parameter value for Yosys chparam (paths relative to the repository)."""
     if isinstance(value, Path):
         return f'"{rel(value)}"'
     if isinstance(value, str):
@@ -177,7 +177,7 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
         script.append("read_verilog -lib +/ecp5/cells_bb.v")  # EHXPLLL
     script += [f"read_verilog -defer {rel(p)}" for p in sources]
     if parameters:
-        script.append("chparam " + " ".join(f"-set {k} {_literal(v)}" for k, v in parameters.items()) + f" {top}")
+        script.append("chparam " + " ".join(f"-set {k} {literal(v)}" for k, v in parameters.items()) + f" {top}")
     script += [
         f"hierarchy -check -top {top}",
         f"synth_{target.family} -top {top} -json {rel(netlist)}"

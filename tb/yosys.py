@@ -21,6 +21,10 @@ from typing import Mapping
 
 from runner import REPO, SIM_BUILD, build_id, file_list
 
+sys.path.insert(0, str(REPO / "scripts"))
+from synth import literal as _literal  # noqa: E402  (the board flow's helpers, one copy)
+from synth import rel as _relative  # noqa: E402
+
 FAMILIES = ("ice40", "ecp5")
 
 
@@ -36,20 +40,6 @@ class SynthResult:
     @property
     def latches(self) -> int:
         return sum(n for cell, n in self.cells.items() if "LATCH" in cell.upper())
-
-
-def _relative(path: Path) -> str:
-    path = Path(path).resolve()
-    try:
-        return str(path.relative_to(REPO))
-    except ValueError:
-        raise ValueError(f"{path}: YoWASP Yosys only sees files inside {REPO}") from None
-
-
-def _literal(value: object) -> str:
-    if isinstance(value, (str, Path)):
-        return '"' + (_relative(Path(value)) if isinstance(value, Path) else value) + '"'
-    return str(int(value))
 
 
 def yosys_binary() -> str:

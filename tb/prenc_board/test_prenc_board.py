@@ -26,7 +26,6 @@ import subprocess
 import sys
 import time
 import tty
-from pathlib import Path
 
 import cocotb
 import numpy as np

@@ -27,7 +27,6 @@ from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import PERIOD_NS, drive_events, rng
 from prenc.debruijn import Code
-from prenc.mode_fsm import Mode
 from prenc.predictor import taps_mask
 from prenc.reader import Reader, events_from_run
 from prenc.scenarios import core_latency, judge, scenarios

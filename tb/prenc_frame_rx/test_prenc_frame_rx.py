@@ -95,7 +95,6 @@ async def fuzzed_streams_match_the_model_and_reject_every_corrupted_frame(dut):
         errors += int(dut.frame_error.value)
         await FallingEdge(dut.clk)
 
-    idle_run = 0  # clocks since the last byte, as the RTL counts them inside a frame
     for frame, what in stream(r, max_len, 400):
         counts[what] = counts.get(what, 0) + 1
         if what == "good" and not model.in_frame:

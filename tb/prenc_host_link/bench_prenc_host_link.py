@@ -14,7 +14,7 @@ import cocotb
 
 from prenc import protocol
 from prenc.protocol import Kind
-from test_prenc_host_link import Link, setup
+from test_prenc_host_link import setup
 
 
 @cocotb.test()

@@ -13,7 +13,7 @@ import random
 
 import cocotb
 import pytest
-from cocotb.triggers import ClockCycles, FallingEdge, RisingEdge, with_timeout
+from cocotb.triggers import ClockCycles, RisingEdge, with_timeout
 from cocotb.utils import get_sim_time
 
 from common import PERIOD_NS, rng, start_clock_and_reset
@@ -23,9 +23,6 @@ from runner import run
 from uart import UartSink, UartSource
 
 TOPLEVEL = "prenc_host_link"
-CORE_INPUTS = ("pos_abs", "pos_hyb", "pos_valid", "mode", "direction", "incremental", "track1_pos",
-               "track1_valid", "track2_pos", "track2_valid", "track1_errors", "track2_errors", "sync_errors")
-
 
 class Link:
     def __init__(self, dut):

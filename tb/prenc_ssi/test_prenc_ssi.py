@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import cocotb
 import pytest
-from cocotb.triggers import ClockCycles, FallingEdge, ReadOnly, RisingEdge, Timer
+from cocotb.triggers import ClockCycles, FallingEdge, ReadOnly, Timer
 
 from common import PERIOD_NS, rng, start_clock_and_reset
 from prenc import ssi
