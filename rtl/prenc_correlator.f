@@ -1,0 +1,2 @@
+// Sources of prenc_correlator, relative to this folder (verilator -F, or -f from rtl/).
+prenc_correlator.v
