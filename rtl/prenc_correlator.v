@@ -185,7 +185,8 @@ module prenc_correlator #(
   reg [PW-1:0]        best_f;
   reg signed [SW-1:0] best_s, second_s;
   reg                 have_best, have_second;
-  wire [KW:0] kd_up   = (k2 >= best_k) ? ({1'b0, k2} - {1'b0, best_k}) : ({1'b0, best_k} - {1'b0, k2});
+  wire [KW:0] kd_up   = (k2 >= best_k) ? ({1'b0, k2} - {1'b0, best_k})
+                                       : ({1'b0, best_k} - {1'b0, k2});
   wire [KW:0] kd_down = K_WIDE - kd_up;
   wire        far     = (kd_up >= 2) && (kd_down >= 2);
   wire        take_second = far && (!have_second || score2 > second_s);
@@ -294,7 +295,7 @@ module prenc_correlator #(
         end
       end
       if (check_missing != 0) begin
-        $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than M*(N+1) = %0d",
+        $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than %0d bits",
                  ROM_FILE, check_missing, K, W);
         $finish;
       end

@@ -5,6 +5,7 @@
     prenc taps   --bits N [--taps a,b,...]
     prenc demo   [--out DIR]
     prenc host   read|monitor|log|plot ...   (the board over its UART; see prenc.host)
+    prenc nd     search|table|phase|image|rom ...   ((n,d)-sequences; see prenc.nd.cli)
 
 Every error is one line on stderr and a non-zero exit status (2 for a malformed
 command line, 1 for a request that cannot be carried out); no partial file is
@@ -114,6 +115,9 @@ def build_parser() -> argparse.ArgumentParser:
     from .host import add_parser as add_host_parser
 
     add_host_parser(sub)
+    from .nd.cli import add_parser as add_nd_parser
+
+    add_nd_parser(sub)
     return parser
 
 

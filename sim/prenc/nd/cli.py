@@ -1,0 +1,207 @@
+"""`prenc nd`: (n,d)-sequences, parallel phasing, the imaging experiment, decoder ROMs.
+
+    prenc nd search  --n N --d D [--method exact|algorithm1|lfsr] [--length K] [--time-limit S] [--json]
+    prenc nd table   --max-n M [--min-n 3] [--time-limit S] [--json | --markdown] [--no-sequences]
+    prenc nd phase   --sequence 0110... [--sequence ...] --n N [--json]
+    prenc nd phase   --disc [--bits N] [--json]
+    prenc nd image   [--readings R] [--out PNG] [--json]
+    prenc nd rom     --sequence ... [--phases a,b] --n N [-o FILE]
+
+Every sequence printed has passed the independent minimum-distance check
+(`prenc.nd.sequence.min_distance`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from .algorithm1 import algorithm1
+from .beam import sequence_of_length
+from .bounds import upper_bound
+from .exact import exact_search
+from .lfsr_codes import best_lfsr
+from .sequence import as_bits, check
+
+
+def _int_list(text: str) -> list[int]:
+    try:
+        return [int(t) for t in text.split(",") if t.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected integers separated by commas, got {text!r}") from None
+
+
+def _check_nd(n: int, d: int) -> None:
+    if not 2 <= n <= 20:
+        raise ValueError(f"window length n = {n} is out of range 2..20")
+    if not 1 <= d <= n:
+        raise ValueError(f"distance d = {d} is out of range 1..n")
+
+
+def cmd_search(args) -> None:
+    n, d = args.n, args.d
+    _check_nd(n, d)
+    upper, reason = upper_bound(n, d)
+    if args.length is not None:
+        if not 1 <= args.length <= upper:
+            raise ValueError(f"length {args.length} is out of range 1..{upper} ({reason})")
+        seq = sequence_of_length(n, d, args.length, args.time_limit)
+        if seq is None:
+            raise ValueError(f"no ({n},{d})-sequence of length {args.length} found")
+        out = {"n": n, "d": d, "length": len(seq), "exact": None, "sequence": seq, "method": "given length"}
+    elif args.method == "algorithm1":
+        out = algorithm1(n, d, time_limit=args.time_limit).as_dict()
+    elif args.method == "lfsr":
+        built = best_lfsr(n, d)
+        if built is None:
+            raise ValueError(f"no m-sequence of degree < {n} has {n}-windows at distance >= {d}")
+        out = {"n": n, "d": d, "length": built.length, "exact": built.length >= upper,
+               "sequence": built.sequence, "method": built.method}
+    else:
+        built = best_lfsr(n, d)
+        res = exact_search(n, d, lower=built.length if built else 0,
+                           lower_sequence=built.sequence if built else None, upper=upper,
+                           time_limit=args.time_limit)
+        out = res.as_dict()
+        out["exact"] = res.exact or res.length >= upper
+        if built and res.length == built.length:
+            out["method"] += f" (no longer than the {built.method})"
+    if out["sequence"] is None:
+        raise ValueError(f"no ({n},{d})-sequence found")
+    out["min_distance"] = check(out["sequence"], n, d)
+    out["upper_bound"], out["upper_bound_reason"] = upper, reason
+    if args.json:
+        print(json.dumps(out))
+        return
+    status = "proven maximal" if out["exact"] else "a lower bound" if out["exact"] is False else "of the length asked"
+    print(f"({n},{d})-sequence of length {out['length']} ({status}; upper bound {upper}, {reason}); "
+          f"method: {out['method']}; minimum window distance {out['min_distance']} (checked)")
+    print(out["sequence"])
+
+
+def cmd_table(args) -> None:
+    from .table import build_table, to_json, to_markdown
+
+    def progress(e) -> None:
+        if not args.quiet:
+            sys.stderr.write(f"n={e.n} d={e.d}: {e.length}{'' if e.exact else ' (lower bound)'} "
+                             f"[{e.seconds:.1f} s]\n")
+
+    table = build_table(args.max_n, args.min_n, time_limit=args.time_limit, progress=progress)
+    if args.json:
+        print(json.dumps(to_json(table, not args.no_sequences)))
+    else:
+        print(to_markdown(table))
+
+
+def cmd_phase(args) -> None:
+    from .phasing import best_phasing, dual_track
+
+    if args.disc:
+        out = dual_track(args.bits).as_dict()
+        if args.json:
+            print(json.dumps(out))
+            return
+        line, heads, best = (out["line_sensor_at_track_shift"], out["two_heads_180_degrees"], out["best"])
+        print(f"disc N={out['n']}, L={out['length']}, track shift D={out['track_shift']}")
+        print(f"  line sensor across both tracks, offset D:      min summed distance {line['min_summed_distance']} "
+              f"(detects {line['detects']}, corrects {line['corrects']})")
+        print(f"  two heads 180 degrees apart, offset {out['head_offset']}:     min summed distance "
+              f"{heads['min_summed_distance']} (detects {heads['detects']}, corrects {heads['corrects']})")
+        print(f"  best offset {best['phases'][1]}: min summed distance {best['min_summed_distance']} "
+              f"(detects {best['detects']}, corrects {best['corrects']}); "
+              f"{len(out['best_offsets'])} offsets reach it")
+        return
+    if not args.sequence or args.n is None:
+        raise ValueError("give --n and one --sequence per track (or --disc)")
+    seqs = [as_bits(s) for s in args.sequence]
+    ph = best_phasing(seqs, args.n)
+    out = ph.as_dict()
+    if args.json:
+        print(json.dumps(out))
+    else:
+        print(f"phases {out['phases']}: min summed distance {out['min_summed_distance']} "
+              f"(std {out['std']}, {out['pairs_at_min']} pairs at the minimum); "
+              f"detects {out['detects']}, corrects {out['corrects']} misread bits")
+
+
+def cmd_image(args) -> None:
+    from .experiment import conclusions, plot, run
+
+    def progress(name, values) -> None:
+        sys.stderr.write(f"{name}: " + " ".join(f"{100 * v:.0f}" for v in values) + "\n")
+
+    result = run(args.readings, seed=args.seed, progress=progress)
+    verdict = conclusions(result)
+    if args.out:
+        plot(result, args.out)
+    if args.json:
+        print(json.dumps({**result.as_dict(), "conclusions": verdict}))
+        return
+    print("noise c: " + " ".join(f"{c:>5}" for c in result.levels))
+    for name in result.names:
+        print(f"{name:<22} " + " ".join(f"{100 * v:5.1f}" for v in result.correct[name]))
+    for claim, holds in verdict.items():
+        print(f"{'holds' if holds else 'FAILS'}: {claim}")
+
+
+def cmd_rom(args) -> None:
+    from ..rom import write_atomically
+    from .correlator import rom_text, rom_windows
+
+    seqs = [as_bits(s) for s in args.sequence]
+    phases = args.phases or [0] * len(seqs)
+    windows = rom_windows(seqs, args.n, phases)
+    text = rom_text(windows)
+    if args.output == "-":
+        sys.stdout.write(text)
+    else:
+        write_atomically(args.output, lambda: text.encode())
+
+
+def add_parser(sub) -> None:
+    nd = sub.add_parser("nd", help="error-tolerant (n,d)-sequences, parallel tracks, correlation decoding")
+    cmds = nd.add_subparsers(dest="nd_command", required=True, parser_class=type(nd))
+
+    search = cmds.add_parser("search", help="the longest (n,d)-sequence (or one of a given length)")
+    search.add_argument("--n", type=int, required=True, help="window length n")
+    search.add_argument("--d", type=int, required=True, help="minimum distance d between any two windows")
+    search.add_argument("--method", choices=["exact", "algorithm1", "lfsr"], default="exact",
+                        help="exact: DFS seeded by the best LFSR construction (default); algorithm1: the paper's "
+                             "breadth-first search; lfsr: the construction alone")
+    search.add_argument("--length", type=int, help="find a sequence of exactly this length instead")
+    search.add_argument("--time-limit", type=float, default=60.0, help="seconds (default 60)")
+    search.add_argument("--json", action="store_true")
+    search.set_defaults(func=cmd_search)
+
+    table = cmds.add_parser("table", help="Table 1 of the paper: best lengths for n = 3..M, d = 1..4")
+    table.add_argument("--max-n", type=int, required=True)
+    table.add_argument("--min-n", type=int, default=3)
+    table.add_argument("--time-limit", type=float, default=20.0, help="seconds of exact search per entry (default 20)")
+    table.add_argument("--json", action="store_true")
+    table.add_argument("--no-sequences", action="store_true", help="leave the sequences out of the JSON")
+    table.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    table.set_defaults(func=cmd_table)
+
+    phase = cmds.add_parser("phase", help="phasing of parallel sequences (equation 1), or the project's disc")
+    phase.add_argument("--sequence", action="append", help="a track's sequence (repeat per track)")
+    phase.add_argument("--n", type=int, help="window length n")
+    phase.add_argument("--disc", action="store_true", help="the dual-track disc: seed shift against the best")
+    phase.add_argument("--bits", type=int, default=10, help="disc N for --disc (default 10)")
+    phase.add_argument("--json", action="store_true")
+    phase.set_defaults(func=cmd_phase)
+
+    image = cmds.add_parser("image", help="the imaging experiment of the paper's figure 5")
+    image.add_argument("--readings", type=int, default=400, help="readings per encoder and noise level (default 400)")
+    image.add_argument("--seed", type=int, default=5)
+    image.add_argument("--out", help="PNG plot to write")
+    image.add_argument("--json", action="store_true")
+    image.set_defaults(func=cmd_image)
+
+    rom = cmds.add_parser("rom", help="the window ROM of rtl/prenc_correlator.v")
+    rom.add_argument("--sequence", action="append", required=True, help="a track's sequence (repeat per track)")
+    rom.add_argument("--phases", type=_int_list, help="phase of each track (default all 0)")
+    rom.add_argument("--n", type=int, required=True, help="window length n")
+    rom.add_argument("--output", "-o", default="-", help="file, - for stdout (default)")
+    rom.set_defaults(func=cmd_rom)
