@@ -65,6 +65,10 @@ def min_distance(seq, n: int) -> int:
     w = windows(seq, n)
     if len(w) < 2:
         return n + 1
+    if len(np.unique(w)) < len(w):
+        return 0
+    if len(w) > 1 << (n - 1):
+        return 1  # more distinct windows than (n-1)-bit prefixes: two differ only in their last bit
     best = n
     for i in range(len(w) - 1):
         row = popcount(w[i] ^ w[i + 1:])
