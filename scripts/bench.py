@@ -333,7 +333,6 @@ def correlator_rate() -> dict:
     for x in readings:
         decode(x, windows, 8)
     result["python_per_second"] = len(readings) / (time.perf_counter() - t0)
-    result["rom"] = str(rom)
     return result
 
 

@@ -135,7 +135,3 @@ def starts(samples: np.ndarray, windows: np.ndarray, sample_bits: int) -> np.nda
     c = np.argmax(scores.reshape(r, k * p), axis=1)
     return c / p
 
-
-def score_width(m: int, n: int, p: int, sample_bits: int) -> int:
-    """Bits of the signed score: |score| <= m * n * p * (2^B - 1)."""
-    return (m * n * p * ((1 << sample_bits) - 1)).bit_length() + 1

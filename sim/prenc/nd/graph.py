@@ -36,11 +36,6 @@ class Balls:
         return ball
 
 
-def successor(v: int, bit: int, n: int) -> int:
-    """The window after v when the sequence continues with `bit`."""
-    return ((v << 1) | bit) & ((1 << n) - 1)
-
-
 def sequence_of_cycle(cycle: list[int], n: int) -> str:
     """The sequence whose windows are `cycle`, in order: each window's oldest bit."""
     return "".join(str(v >> (n - 1) & 1) for v in cycle)

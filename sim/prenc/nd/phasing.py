@@ -170,4 +170,4 @@ def dual_track(n: int = 10, taps=None, shift: int | None = None) -> DualTrack:
         n, length, shift, head_offset,
         evaluate(dist.astype(np.int16) + _rolled(dist, shift), (0, shift)),
         evaluate(dist.astype(np.int16) + _rolled(dist, head_offset), (0, head_offset)),
-        best, tuple(sorted({e for e in candidates})), by_offset)
+        best, tuple(candidates), by_offset)
