@@ -6,6 +6,8 @@
     prenc demo   [--out DIR]
     prenc host   read|monitor|log|plot ...   (the board over its UART; see prenc.host)
     prenc nd     search|table|phase|image|rom ...   ((n,d)-sequences; see prenc.nd.cli)
+    prenc matrix generate|count|example|rom ...    (2-D matrix codes; see prenc.matrix.cli)
+    prenc disc   dual|matrix|nd ...               (printable discs, SVG + PNG; see prenc.disc)
 
 Every error is one line on stderr and a non-zero exit status (2 for a malformed
 command line, 1 for a request that cannot be carried out); no partial file is
@@ -118,6 +120,12 @@ def build_parser() -> argparse.ArgumentParser:
     from .nd.cli import add_parser as add_nd_parser
 
     add_nd_parser(sub)
+    from .matrix.cli import add_parser as add_matrix_parser
+
+    add_matrix_parser(sub)
+    from .disc import add_parser as add_disc_parser
+
+    add_disc_parser(sub)
     return parser
 
 

@@ -1,0 +1,2 @@
+// Sources of prenc_matrix_fkm, relative to this folder (verilator -F, or -f from rtl/).
+prenc_matrix_fkm.v

@@ -1,0 +1,5 @@
+// Sources of prenc_matrix_reader, relative to this folder (verilator -F, or -f from rtl/).
+prenc_matrix_reader.v
+prenc_matrix_table.v
+prenc_matrix_fkm.v
+prenc_rom_check.v
