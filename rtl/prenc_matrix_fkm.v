@@ -63,7 +63,8 @@ module prenc_matrix_fkm #(
   reg [B-1:0]   bumped;            // a[i] + 1
   reg           divides;           // N is a multiple of period
   reg [2:0]     src;               // j mod period
-  integer       j;
+  integer       j;                 // loop index of the search
+  integer       k;                 // loop index of the fill
   integer       q;
 
   always @* begin
@@ -97,6 +98,7 @@ module prenc_matrix_fkm #(
     sym_valid_next = 1'b0;
     sym_next       = sym;
     src            = 3'd0;
+    k              = 0;
 
     if (!done) begin
       if (emit_reg) begin
@@ -109,17 +111,17 @@ module prenc_matrix_fkm #(
       end else if (!found) begin
         done_next = 1'b1;
       end else begin
-        for (j = 0; j < N; j = j + 1) begin
-          // a[j] = a'[j mod p], a' = a with a[i] incremented (j mod p <= i);
-          // j < 4, so three conditional subtractions reduce it
-          src = j[2:0];
+        for (k = 0; k < N; k = k + 1) begin
+          // a[k] = a'[k mod p], a' = a with a[i] incremented (j mod p <= i);
+          // k < 4, so three conditional subtractions reduce it
+          src = k[2:0];
           if (src >= period) src = src - period;
           if (src >= period) src = src - period;
           if (src >= period) src = src - period;
           if (src == last) begin
-            word_next[j*B +: B] = bumped;
+            word_next[k*B +: B] = bumped;
           end else begin
-            word_next[j*B +: B] = word_reg[src*B +: B];
+            word_next[k*B +: B] = word_reg[src*B +: B];
           end
         end
         len_next = period;

@@ -25,7 +25,7 @@
 // every column has even parity (else out_checksum_error). The position of the
 // image's left edge is out_position - out_phase/CELL cells.
 //
-// Timing: out_valid pulses on the N*N + 4th clock after the frame's last pixel.
+// Timing: out_valid pulses on the N*N + 5th clock after the frame's last pixel.
 // A frame whose first pixel comes while busy is ignored; a pixel_first in the middle
 // of a frame starts a new frame (the partial one is dropped).
 //

@@ -50,10 +50,13 @@ class Target:
     name: str
     brams: str  # the block RAM cell nextpnr reports
     logic: str  # the logic cell nextpnr reports
+    synth_args: tuple[str, ...] = ()  # extra synth_<family> options
 
 
 TARGETS = {
-    "ice40-up5k": Target("ice40", ("--up5k", "--package", "sg48"), "iCE40 UP5K (SG48)", "ICESTORM_RAM", "ICESTORM_LC"),
+    # -spram: single-port RAMs without initial contents may use the UP5K's four SPRAMs
+    "ice40-up5k": Target("ice40", ("--up5k", "--package", "sg48"), "iCE40 UP5K (SG48)", "ICESTORM_RAM", "ICESTORM_LC",
+                         ("-spram",)),
     "ice40-hx8k": Target("ice40", ("--hx8k", "--package", "ct256"), "iCE40 HX8K (CT256)", "ICESTORM_RAM", "ICESTORM_LC"),
     "ecp5-85k": Target("ecp5", ("--85k", "--package", "CABGA381"), "ECP5 LFE5U-85F (CABGA381)", "DP16KD", "TRELLIS_COMB"),
     "ecp5-25k": Target("ecp5", ("--25k", "--package", "CABGA381"), "ECP5 LFE5U-25F (CABGA381)", "DP16KD", "TRELLIS_COMB"),
@@ -181,7 +184,7 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
     script += [
         f"hierarchy -check -top {top}",
         f"synth_{target.family} -top {top} -json {rel(netlist)}"
-        + (" -abc9" if target.family == "ecp5" else ""),
+        + (" -abc9" if target.family == "ecp5" else "") + "".join(f" {a}" for a in target.synth_args),
         "check -assert",
         f"tee -q -o {rel(stat)} stat -json",
     ]
@@ -291,6 +294,30 @@ def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timin
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
     return build("prenc_core", file_list(RTL / "prenc_core.f"), target, params, freq_mhz, out, bitstream=False,
                  require_timing=require_timing)
+
+
+def matrix_build(n: int, target: str, freq_mhz: float, out: Path, table: str = "generator",
+                 checksum: bool = False, require_timing: bool = True) -> Result:
+    """The matrix-code encoder (reader + SSI, default sensor geometry), placed and routed.
+
+    table "generator": the table fills itself after reset (a RAM with no initial
+    contents: on the UP5K, n = 4 goes to the four SPRAMs); "file": a ROM from
+    `prenc matrix rom` (block RAM)."""
+    from prenc.matrix.rom import write_matrix_rom
+    from prenc.matrix.sensor import default_geometry
+
+    params: dict[str, object] = dict(default_geometry(n).parameters())
+    params["CHECKSUM"] = int(checksum)
+    params["TABLE"] = table
+    if table == "file":
+        out.mkdir(parents=True, exist_ok=True)
+        rom = out / f"prenc_matrix_n{n}{'_checksum' if checksum else ''}.hex"
+        write_matrix_rom(rom, n, checksum, "hex")
+        params["TABLE_FILE"] = rom
+    result = build("prenc_matrix_encoder", file_list(RTL / "prenc_matrix_encoder.f"), target, params, freq_mhz,
+                   out, bitstream=False, require_timing=require_timing)
+    result.bits = n
+    return result
 
 
 def main(argv: list[str] | None = None) -> int:

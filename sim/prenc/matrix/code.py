@@ -181,6 +181,17 @@ class MatrixCode:
         return w
 
 
+def build_clocks(n: int, checksum: bool = False) -> int:
+    """Clocks from reset to `ready` of rtl/prenc_matrix_table.v with TABLE = "generator":
+    the FKM generator emits one symbol per clock and spends one clock on each step to
+    the next prenecklace (P of them, the last step finding none); N-1 closing zeros
+    follow, then ready registers."""
+    b = n - 1 if checksum else n
+    k = 1 << b
+    prenecklace_count = sum(1 for _ in prenecklaces(k, n))
+    return k ** n + prenecklace_count + (n - 1) + 1
+
+
 def cost(n: int) -> dict:
     """What the parity track costs at order n."""
     plain, check = MatrixCode(n).length, MatrixCode(n, checksum=True).length

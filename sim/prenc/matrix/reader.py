@@ -80,4 +80,4 @@ def read_frame(frame: np.ndarray, geom: Geometry, code: MatrixCode, table: np.nd
 
 def latency(n: int) -> int:
     """Clocks from the frame's last pixel to out_valid (the RTL's pipeline)."""
-    return n * n + 4
+    return n * n + 5

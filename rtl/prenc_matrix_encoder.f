@@ -1,0 +1,7 @@
+// Sources of prenc_matrix_encoder, relative to this folder (verilator -F, or -f from rtl/).
+prenc_matrix_encoder.v
+prenc_matrix_reader.v
+prenc_matrix_table.v
+prenc_matrix_fkm.v
+prenc_rom_check.v
+prenc_ssi.v
