@@ -176,8 +176,6 @@ module prenc_matrix_reader #(
     end
   end
 
-  integer c;
-
   always @(posedge clk) begin
     frame_done_reg <= 1'b0;
     if (take) begin
@@ -211,11 +209,8 @@ module prenc_matrix_reader #(
         end
         // d(x-1) is complete now: count it if it is a peak (x-1 >= 2)
         if (cx >= 8'd3 && step1_reg >= step2_reg && step1_reg > diff) begin
-          for (c = 0; c < CELL; c = c + 1) begin
-            if (prev_mod_reg == c[PHASE_BITS-1:0]) begin
-              energy_reg[c*EW +: EW] <= energy_reg[c*EW +: EW] + {{(EW-PB){1'b0}}, step1_reg};
-            end
-          end
+          energy_reg[prev_mod_reg*EW +: EW] <= energy_reg[prev_mod_reg*EW +: EW] +
+                                               {{(EW-PB){1'b0}}, step1_reg};
         end
       end
     end
@@ -259,6 +254,7 @@ module prenc_matrix_reader #(
   // argmax of the edge energy, the first phase on a tie
   reg  [PHASE_BITS-1:0] best_phase;
   reg  [EW-1:0]         best_energy;
+  integer               c;
   always @* begin
     best_phase  = {PHASE_BITS{1'b0}};
     best_energy = energy_reg[EW-1:0];

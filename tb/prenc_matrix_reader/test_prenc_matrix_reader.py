@@ -259,3 +259,22 @@ def test_missing_table_file_stops_the_simulation(simulator, capfd):
         run(__file__, TOPLEVEL, simulator, parameters={**params(2), "TABLE_FILE": missing}, testcase="windows")
     out = capfd.readouterr()
     assert f'TABLE_FILE "{missing}" cannot be opened' in out.out + out.err
+
+
+@pytest.mark.synth
+@pytest.mark.xdist_group("yowasp")
+def test_n4_table_fits_the_up5k():
+    """n = 4: the 64 Ki x 16 table in the UP5K's four SPRAMs (built on chip after reset),
+    the whole encoder (reader + SSI) placed and routed at 24 MHz."""
+    import sys
+
+    from runner import REPO
+
+    sys.path.insert(0, str(REPO / "scripts"))
+    import synth
+
+    result = synth.matrix_build(4, "ice40-up5k", 24.0, SIM_BUILD / "matrix_synth" / "up5k_n4", "generator")
+    assert result.cells.get("SB_SPRAM256KA") == 4, result.cells
+    assert result.used("ICESTORM_SPRAM") == (4, 4)
+    assert result.used("ICESTORM_LC")[0] < 5280 // 2
+    assert result.timing_met
