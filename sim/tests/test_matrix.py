@@ -88,6 +88,7 @@ def test_hamiltonian_search_cross_checks_fkm(n):
     for a, b in zip(warn.cycle, warn.cycle[1:] + warn.cycle[:1]):
         assert b in successors(a, n)  # every step is an arc of G
     assert windows_once(columns_of_cycle(warn.cycle, n), n, 1 << n)
+    assert columns_of_cycle(warn.cycle, n) != fkm(1 << n, n)  # a second, independent code
 
 
 def test_count_of_hamiltonian_cycles_for_n2_is_20736():

@@ -107,7 +107,8 @@ def hamiltonian_cycle(n: int, order: str = "warnsdorff", time_limit: float = 60.
     generic graph search: it knows nothing of Lyndon words, so it cross-checks the
     FKM construction.
 
-    order "warnsdorff" tries the successor with the fewest onward choices first;
+    order "warnsdorff" tries the successor with the fewest onward choices first
+    (the largest on a tie);
     "lexicographic" tries the smallest first, so the first cycle found is the
     lexicographically least, whose columns must be exactly the FKM sequence."""
     if order not in ORDERS:
@@ -132,8 +133,10 @@ def hamiltonian_cycle(n: int, order: str = "warnsdorff", time_limit: float = 60.
         cand = [w for w in succ[v] if not visited[w]]
         if order == "lexicographic":
             return cand[::-1]
-        cand.sort(key=lambda w: (sum(1 for x in succ[w] if not visited[x]), w), reverse=True)
-        return cand  # popped from the end: fewest onward choices first
+        # popped from the end: fewest onward choices first, the largest window on a
+        # tie (so that it does not retrace the lexicographic search)
+        cand.sort(key=lambda w: (sum(1 for x in succ[w] if not visited[x]), -w), reverse=True)
+        return cand
 
     todo.append(ordered(start))
     while todo:
