@@ -68,38 +68,13 @@ module prenc_converter #(
   assign pos_valid = pos_valid_reg;
 
 `ifndef SYNTHESIS
-  // A missing ROM file must not become an all-X or all-zero ROM. Load the file a
-  // second time into a one-bit-wider copy preset to a marker value that no N-bit
-  // word can have; any marker left over is a word the file did not supply.
-  reg     [N:0] rom_check [0:DEPTH-1];
-  integer       check_fd;
-  integer       check_i;
-  integer       check_missing;
-
-  initial begin
-    check_fd = $fopen(ROM_FILE, "r");
-    if (check_fd == 0) begin
-      $display("ERROR: %m: ROM_FILE \"%0s\" cannot be opened", ROM_FILE);
-      $finish;
-    end else begin
-      $fclose(check_fd);
-      for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
-        rom_check[check_i] = {1'b1, {N{1'b0}}};
-      end
-      $readmemh(ROM_FILE, rom_check);
-      check_missing = 0;
-      for (check_i = 0; check_i < DEPTH; check_i = check_i + 1) begin
-        if (rom_check[check_i][N]) begin
-          check_missing = check_missing + 1;
-        end
-      end
-      if (check_missing != 0) begin
-        $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than N = %0d",
-                 ROM_FILE, check_missing, DEPTH, N);
-        $finish;
-      end
-    end
-  end
+  // A missing or short ROM file must not become an all-X or all-zero ROM.
+  prenc_rom_check #(
+    .NAME  ("ROM_FILE"),
+    .FILE  (ROM_FILE),
+    .DEPTH (DEPTH),
+    .WIDTH (N)
+  ) u_rom_check ();
 `endif
 
 endmodule

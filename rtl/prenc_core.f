@@ -6,6 +6,7 @@ prenc_shift_register.v
 prenc_predictor.v
 prenc_datapath.v
 prenc_converter.v
+prenc_rom_check.v
 prenc_position.v
 prenc_track_monitor.v
 prenc_mode_fsm.v

@@ -272,35 +272,13 @@ module prenc_correlator #(
   end
 
 `ifndef SYNTHESIS
-  reg     [W:0] rom_check [0:K-1];
-  integer       check_fd;
-  integer       check_i;
-  integer       check_missing;
-
-  initial begin
-    check_fd = $fopen(ROM_FILE, "r");
-    if (check_fd == 0) begin
-      $display("ERROR: %m: ROM_FILE \"%0s\" cannot be opened", ROM_FILE);
-      $finish;
-    end else begin
-      $fclose(check_fd);
-      for (check_i = 0; check_i < K; check_i = check_i + 1) begin
-        rom_check[check_i] = {1'b1, {W{1'b0}}};
-      end
-      $readmemh(ROM_FILE, rom_check);
-      check_missing = 0;
-      for (check_i = 0; check_i < K; check_i = check_i + 1) begin
-        if (rom_check[check_i][W]) begin
-          check_missing = check_missing + 1;
-        end
-      end
-      if (check_missing != 0) begin
-        $display("ERROR: %m: ROM_FILE \"%0s\": %0d of %0d words missing or wider than %0d bits",
-                 ROM_FILE, check_missing, K, W);
-        $finish;
-      end
-    end
-  end
+  // A missing or short ROM file must not become an all-X or all-zero ROM.
+  prenc_rom_check #(
+    .NAME  ("ROM_FILE"),
+    .FILE  (ROM_FILE),
+    .DEPTH (K),
+    .WIDTH (W)
+  ) u_rom_check ();
 `endif
 
 endmodule

@@ -6,6 +6,7 @@
 ../../rtl/prenc_predictor.v
 ../../rtl/prenc_datapath.v
 ../../rtl/prenc_converter.v
+../../rtl/prenc_rom_check.v
 ../../rtl/prenc_position.v
 ../../rtl/prenc_track_monitor.v
 ../../rtl/prenc_mode_fsm.v

@@ -132,7 +132,7 @@ def test_bad_rom_file_stops_the_simulation(simulator, case, message, capfd):
             testcase="every_word_in_order")
     out = capfd.readouterr()
     text = out.out + out.err
-    assert f'ERROR: {TOPLEVEL}: ROM_FILE "{bad_rom(case)}"' in text
+    assert f'ERROR: {TOPLEVEL}.u_rom_check: ROM_FILE "{bad_rom(case)}"' in text
     assert message in text
 
 
