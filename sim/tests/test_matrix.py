@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from prenc.cli import main
-from prenc.matrix.code import MatrixCode, build_clocks, cost, fkm, windows_once
+from prenc.matrix.code import MatrixCode, build_clocks, cost, fkm, prenecklaces, windows_once
 from prenc.matrix.graph import (adjacency, columns_of_cycle, count_hamiltonian_cycles, debruijn_count,
                                 hamiltonian_cycle, matrix_code_count, successors)
 from prenc.matrix.paper import NUMBERINGS, PAPER_CYCLE, check_cycle, matrix_of, table_one, tracks_of_cycle
@@ -158,8 +158,9 @@ def test_cost_of_the_parity_track():
 
 
 def test_build_clocks_of_the_self_built_table():
-    assert build_clocks(4) == 65536 + sum(1 for _ in __import__("prenc.matrix.code", fromlist=["x"])
-                                          .prenecklaces(16, 4)) + 4
+    # one clock per symbol, one per prenecklace step, n-1 closing zeros, one for ready
+    assert build_clocks(4) == 65536 + sum(1 for _ in prenecklaces(16, 4)) + 3 + 1
+    assert build_clocks(4) == 83356
 
 
 @pytest.mark.parametrize("fmt", ["hex", "bin", "mif", "coe", "mem"])
