@@ -42,6 +42,17 @@ def rom_file(n: int, fmt: str = "hex") -> Path:
     return path
 
 
+def matrix_rom_file(n: int, checksum: bool = False) -> Path:
+    """The matrix-code table of order n, written by the same code as `prenc matrix rom`
+    to sim_build/roms/ (fixed path: builds that name it are reused)."""
+    from prenc.matrix.rom import write_matrix_rom
+
+    path = SIM_BUILD / "roms" / f"prenc_matrix_n{n}{'_checksum' if checksum else ''}.hex"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_matrix_rom(path, n, checksum, "hex")
+    return path
+
+
 def file_list(toplevel: str) -> list[Path]:
     """Sources named by rtl/<toplevel>.f, resolved against rtl/ (`//` comments)."""
     listing = RTL / f"{toplevel}.f"

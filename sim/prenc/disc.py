@@ -269,7 +269,6 @@ def nd_strip(sequences: Sequence[str] | None = None, phases: Sequence[int] | Non
         seqs = [as_bits(s) for s in sequences]
         if len({len(s) for s in seqs}) != 1:
             raise ValueError("all sequences of a strip must have the same length")
-        n_check = n
     else:
         from .nd.beam import sequence_of_length
 
@@ -277,10 +276,9 @@ def nd_strip(sequences: Sequence[str] | None = None, phases: Sequence[int] | Non
         if seq is None:
             raise ValueError(f"no ({n},{d})-sequence of length {length} found")
         seqs = [as_bits(seq)] * tracks
-        n_check = n
-    dist = [check(s, n_check, 1) for s in seqs]
+    dist = [check(s, n, 1) for s in seqs]
     if phases is None:
-        phases = best_phasing(seqs, n_check).phases if len(seqs) > 1 else [0]
+        phases = best_phasing(seqs, n).phases if len(seqs) > 1 else [0]
     if len(phases) != len(seqs):
         raise ValueError("give one phase per sequence")
     k = len(seqs[0])
@@ -291,7 +289,7 @@ def nd_strip(sequences: Sequence[str] | None = None, phases: Sequence[int] | Non
         bits = np.array([int(c) for c in s], dtype=np.uint8)
         rings.append(Ring(f"track{j}", j * row, (j + 1) * row, np.roll(bits, -int(ph))))
     caption = [
-        f"prenc (n,d)-sequence strip: {len(seqs)} tracks of K={k} bits, n={n_check}, phases "
+        f"prenc (n,d)-sequence strip: {len(seqs)} tracks of K={k} bits, n={n}, phases "
         f"{','.join(map(str, phases))}; min window distance per track {','.join(map(str, dist))}; ink = 0",
         f"{circumference:.2f} x {height:.2f} mm: wraps once around a cylinder of radius "
         f"{circumference / (2 * math.pi):.2f} mm; bit pitch {circumference / k * 1000:.0f} um; track 0 on top",

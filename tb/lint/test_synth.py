@@ -11,7 +11,7 @@ import re
 
 import pytest
 
-from runner import RTL, SIM_BUILD, rom_file
+from runner import RTL, matrix_rom_file, rom_file
 from yosys import synthesize
 
 TOPS = sorted(p.stem for p in RTL.glob("*.f"))
@@ -20,13 +20,8 @@ TOPS = sorted(p.stem for p in RTL.glob("*.f"))
 def parameters_for(top: str) -> dict:
     source = (RTL / f"{top}.v").read_text()
     if re.search(r'parameter\s+\[71:0\]\s+TABLE\s*=\s*"file"', source):
-        from prenc.matrix.rom import write_matrix_rom
-
-        path = SIM_BUILD / "roms" / "prenc_matrix_n3.hex"
-        path.parent.mkdir(parents=True, exist_ok=True)
-        write_matrix_rom(path, 3, False, "hex")
         extra = {"CELL": 3, "TOP": 3} if "PIXEL_BITS" in source else {}
-        return {"N": 3, "TABLE_FILE": path, **extra}
+        return {"N": 3, "TABLE_FILE": matrix_rom_file(3), **extra}
     if "ROM_FILE" not in source:
         return {}
     n = int(re.search(r"parameter\s+integer\s+N\s*=\s*(\d+)", source).group(1))

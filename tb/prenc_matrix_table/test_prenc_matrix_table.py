@@ -16,7 +16,7 @@ from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import start_clock_and_reset
 from prenc.matrix.code import MatrixCode, build_clocks
-from runner import SIM_BUILD, SIMULATORS, run
+from runner import SIMULATORS, matrix_rom_file, run
 
 TOPLEVEL = "prenc_matrix_table"
 
@@ -52,15 +52,6 @@ async def every_address(dut):
         await FallingEdge(dut.clk)
 
 
-def rom(n: int, checksum: bool) -> str:
-    from prenc.matrix.rom import write_matrix_rom
-
-    path = SIM_BUILD / "roms" / f"prenc_matrix_n{n}{'_checksum' if checksum else ''}.hex"
-    path.parent.mkdir(parents=True, exist_ok=True)
-    write_matrix_rom(path, n, checksum, "hex")
-    return str(path)
-
-
 @pytest.mark.parametrize("n, checksum", [(2, False), (2, True), (3, False), (3, True), (4, False), (4, True)])
 def test_generator_builds_the_rom(n, checksum):
     run(__file__, TOPLEVEL, "verilator", parameters={"N": n, "CHECKSUM": int(checksum), "TABLE": "generator"},
@@ -70,7 +61,7 @@ def test_generator_builds_the_rom(n, checksum):
 @pytest.mark.parametrize("simulator", SIMULATORS)
 def test_file_table(simulator):
     run(__file__, TOPLEVEL, simulator, parameters={"N": 3, "CHECKSUM": 0, "TABLE": "file",
-                                                   "TABLE_FILE": rom(3, False)},
+                                                   "TABLE_FILE": matrix_rom_file(3)},
         extra_env={"MATRIX_TABLE": "file"})
 
 
