@@ -1,0 +1,38 @@
+"""The lock-depth arithmetic (prenc.lock_depth): undetectable misread patterns of a
+lock after k strobes, enumerated on the disc itself."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from prenc.debruijn import Code
+from prenc.lock_depth import depth_row, reading_slots, weight_counts
+
+
+def test_reading_slots_follow_the_geometry():
+    assert reading_slots(10, 1, 3).tolist() == [0, 1, 2]
+    assert reading_slots(10, 2, 2).tolist() == [0, 1, 9, 10]
+
+
+def test_every_wrong_shift_is_counted_once_per_start():
+    code = Code(6)
+    hist, starts = weight_counts(code, reading_slots(6, 2, 6))
+    assert starts == 64 and hist.sum() == 64 * 63
+
+
+def test_weight_matches_brute_force():
+    """The lightest undetectable pattern, recomputed by comparing readings directly."""
+    code = Code(6)
+    seq = code.sequence
+    slots = reading_slots(6, 2, 7)
+    best = min(int(sum(seq[(p + s) % 64] != seq[(p + d + s) % 64] for s in slots))
+               for p in range(64) for d in range(1, 64))
+    assert depth_row(6, 2, 7).min_weight == best
+
+
+def test_deeper_locks_are_safer():
+    for n in (6, 8, 10):
+        rows = [depth_row(n, 2, n + e).p_wrong[0.03] for e in range(4)]
+        assert all(b <= a for a, b in zip(rows, rows[1:])), rows
+    assert depth_row(10, 2, 11).p_wrong[0.03] < depth_row(10, 2, 10).p_wrong[0.03]
+    assert np.isfinite(depth_row(12, 1, 25).p_wrong[0.001])
