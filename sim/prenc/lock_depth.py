@@ -82,8 +82,8 @@ RATES = (0.001, 0.01, 0.03)
 def depth_row(n: int, heads: int, strobes: int, samples: int | None = None) -> DepthRow:
     code = Code(n)
     slots = reading_slots(n, heads, strobes)
-    if samples is None:
-        samples = None if n <= 12 else 64
+    if samples is None and n > 12:
+        samples = 64
     hist, starts = weight_counts(code, slots, samples)
     readings = len(slots)
     nonzero = np.flatnonzero(hist)
