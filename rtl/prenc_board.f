@@ -2,13 +2,10 @@
 prenc_input_conditioner.v
 prenc_quadrature.v
 prenc_sampler.v
-prenc_shift_register.v
-prenc_predictor.v
-prenc_datapath.v
 prenc_converter.v
 prenc_rom_check.v
 prenc_position.v
-prenc_track_monitor.v
+prenc_track_word.v
 prenc_mode_fsm.v
 prenc_core.v
 prenc_crc16.v

@@ -1,19 +1,22 @@
 // prenc_core: the reader of a pseudorandom absolute encoder, pins to verified position.
 //
-//   pins -> prenc_datapath (conditioner, quadrature, sampler, shift register,
-//                           predictor: the code word and both heads' checks)
-//        -> prenc_converter (word -> slot, one clock)
-//        -> prenc_position (slot count from the quadrature + offset from the ROM)
-//        -> prenc_track_monitor x2 (how far each track confirms the position)
-//        -> prenc_mode_fsm (modes; pos_valid)
-// See docs/architecture.md for the block diagram, the modes and the timing.
+//   pins -> prenc_input_conditioner -> prenc_quadrature -> prenc_sampler (strobes)
+//                                                       -> prenc_position (count, events)
+//        -> prenc_track_word x2 (each head's word in count space; raw or law mode)
+//        -> prenc_converter x2 (each word -> slot, one clock)
+//        -> J1 registers (each track's offset = converted slot - window base)
+//        -> prenc_mode_fsm (the judge: offset, modes, pos_valid)
+//        -> pos_abs = count + offset, at one latency
+// See docs/architecture.md for the block diagram, the evidence rule and its
+// arithmetic, the hypotheses after a missed quadrature state, and the timing.
 //
-// Start-up: the word needs N strobes (mid-slot crossings) at distinct slots; then
-// both tracks must agree at 2N further consecutive slots (3N - 1 slots of movement
-// in all), or one track at RUN_LONG slots when the other disagrees.
+// The position is the quadrature count plus an offset; the code proves the offset.
+// Start-up: both heads' words agree on one offset over N + LOCK_BOTH - 1 distinct
+// slots each (default N + 1 for N >= 8), or one head's word holds one offset over
+// N + LOCK_ONE - 1 distinct slots (default 2N + 1), in either direction.
 //
-// Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 3 + FILTER
-// clocks earlier (FILTER = 0: 3 clocks). Hold rst for at least 4 clocks.
+// Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 6 + FILTER
+// clocks earlier, all three aligned. Hold rst for at least 4 clocks.
 //
 // Parameters
 //   N            code word length, 2..24 (2^N slots)
@@ -24,7 +27,16 @@
 //   ROM_FILE     conversion table from `prenc rom --bits N --taps ... --format hex`
 //   COUNT_WIDTH  incremental count width, 2..64
 //   ERROR_WIDTH  error counter widths, 1..32
-//   RUN_LONG     agreeing slots for a single-track verification, 2N..2^N
+//   LOCK_BOTH    two-track lock: N + LOCK_BOTH - 1 consistent slots per track
+//                (default 2 for N >= 8, 3 below: see docs/architecture.md)
+//   LOCK_ONE     one-track lock: N + LOCK_ONE - 1 consistent slots
+//                (default N + 2 for N >= 8, N + 5 below)
+//   LOCK_EXTRA   slots more per track for a lock when a head had a disagreement in
+//                its last 4N checks (3)
+//   DUAL_VOTES   votes that decide between the two hypotheses of a missed state (3)
+//   DUAL_SPAN    slots of travel the decision may take before the offset drops (12)
+//   SCORE_UP, SCORE_LIMIT   a track's health score: + SCORE_UP per mismatch, - 1 per
+//                match, unsupported at SCORE_LIMIT (defaults 4, 12)
 //
 // Ports
 //   head1, head2, sync_a, sync_b   raw asynchronous inputs (datasheet levels)
@@ -34,12 +46,12 @@
 //   pos_hyb        hybrid position 4p + q
 //   pos_valid      pos_abs and pos_hyb are a verified absolute position
 //   mode           0 acquiring, 1 normal, 2 reduced (track 1 only),
-//                  3 reduced (track 2 only), 4 incremental
+//                  3 reduced (track 2 only), 4 incremental (position dropped, or two
+//                  hypotheses open after a missed quadrature state)
 //   position       pos_abs or pos_hyb as `resolution` selects, zero-extended
 //   incremental    signed multi-turn count of quadrature steps since reset
 //   direction      1: the last step was CW
-//   track1_valid   pos_valid, and track 1's own last N readings (N consecutive slots)
-//                  are the code word of pos_abs: track 1 alone reads this position
+//   track1_valid   pos_valid, and track 1 supports it (its law-mode word agrees)
 //   track2_valid   the same for track 2
 //   track1_pos, track2_pos   the position each track reads, valid with its flag
 //   track1_errors, track2_errors   readings that disagreed with the prediction
@@ -57,7 +69,13 @@ module prenc_core #(
   parameter         ROM_FILE    = "prenc_rom_n10.hex",
   parameter integer COUNT_WIDTH = 32,
   parameter integer ERROR_WIDTH = 16,
-  parameter integer RUN_LONG    = (4 * N < (1 << N)) ? 4 * N : (1 << N)
+  parameter integer LOCK_BOTH   = (N < 8) ? 3 : 2,
+  parameter integer LOCK_ONE    = (N < 8) ? N + 5 : N + 2,
+  parameter integer LOCK_EXTRA  = 3,
+  parameter integer DUAL_VOTES  = 3,
+  parameter integer DUAL_SPAN   = 12,
+  parameter integer SCORE_UP    = 4,
+  parameter integer SCORE_LIMIT = 12
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -91,208 +109,345 @@ module prenc_core #(
     end
   endgenerate
 
-  // Datapath
-  wire [1:0]             quarter;
-  wire                   step;
-  wire                   step_cw;
-  wire                   illegal;
-  wire                   strobe;
-  wire [N-1:0]           word;
-  wire                   word_full;
-  wire                   check_now;
-  wire                   mismatch1_now;
-  wire                   mismatch2_now;
-  wire                   flush;
+  // Pins: synchronizers and glitch filters.
+  wire [3:0] clean;  // {B, A, head2, head1}
 
-  wire                   strobe_cw;
-  wire [$clog2(N+1)-1:0] word_count;
+  prenc_input_conditioner #(
+    .WIDTH  (4),
+    .FILTER (FILTER)
+  ) u_input_conditioner (
+    .clk      (clk),
+    .rst      (rst),
+    .in_raw   ({sync_b, sync_a, head2, head1}),
+    .in_clean (clean)
+  );
 
-  // Unused datapath outputs, named for waveforms.
-  wire                   strobe_moved;
-  wire                   strobe_head1;
-  wire                   strobe_head2;
-  wire [N-1:0]           word_known;
-  wire                   predict1;
-  wire                   predict2;
-  wire                   check_d;
-  wire                   expect1_d;
-  wire                   expect2_d;
-  wire                   mismatch1_d;
-  wire                   mismatch2_d;
+  // Quadrature: quarter, steps, illegal transitions, the incremental count.
+  wire [1:0] quarter;
+  wire       step;
+  wire       step_cw;
+  wire       illegal;
 
-  prenc_datapath #(
-    .N           (N),
-    .TAPS        (TAPS),
-    .FILTER      (FILTER),
+  prenc_quadrature #(
     .COUNT_WIDTH (COUNT_WIDTH),
     .ERROR_WIDTH (ERROR_WIDTH)
-  ) u_datapath (
+  ) u_quadrature (
     .clk           (clk),
     .rst           (rst),
-    .head1         (head1),
-    .head2         (head2),
-    .sync_a        (sync_a),
-    .sync_b        (sync_b),
+    .a             (clean[2]),
+    .b             (clean[3]),
     .clear_errors  (clear_errors),
-    .flush         (flush),
     .quarter       (quarter),
     .step          (step),
     .step_cw       (step_cw),
     .illegal       (illegal),
     .illegal_count (sync_errors),
-    .step_count    (incremental),
-    .strobe        (strobe),
-    .strobe_cw     (strobe_cw),
-    .strobe_moved  (strobe_moved),
-    .strobe_head1  (strobe_head1),
-    .strobe_head2  (strobe_head2),
-    .word          (word),
-    .word_known    (word_known),
-    .word_count    (word_count),
-    .word_full     (word_full),
-    .predict1      (predict1),
-    .predict2      (predict2),
-    .check_now     (check_now),
-    .mismatch1_now (mismatch1_now),
-    .mismatch2_now (mismatch2_now),
-    .check         (check_d),
-    .expect1       (expect1_d),
-    .expect2       (expect2_d),
-    .mismatch1     (mismatch1_d),
-    .mismatch2     (mismatch2_d)
+    .count         (incremental)
   );
 
-  // Converter
-  wire         conv_valid;
-  wire [N-1:0] conv_pos;
+  // Mid-slot strobes with both heads.
+  wire strobe;
+  wire strobe_cw;  // for waveforms
+  wire strobe_moved;  // for waveforms
+  wire strobe_head1;
+  wire strobe_head2;
 
-  prenc_converter #(
-    .N        (N),
-    .ROM_FILE (ROM_FILE)
-  ) u_converter (
-    .clk        (clk),
-    .rst        (rst),
-    .word_valid (word_full),
-    .word       (word),
-    .pos_valid  (conv_valid),
-    .pos        (conv_pos)
+  prenc_sampler u_sampler (
+    .clk          (clk),
+    .rst          (rst),
+    .head1_in     (clean[0]),
+    .head2_in     (clean[1]),
+    .step         (step),
+    .step_cw      (step_cw),
+    .quarter      (quarter),
+    .break_in     (illegal),
+    .strobe       (strobe),
+    .strobe_cw    (strobe_cw),
+    .strobe_moved (strobe_moved),
+    .strobe_head1 (strobe_head1),
+    .strobe_head2 (strobe_head2)
   );
 
-  // Position
+  // The count and the events (same clock as the strobe).
   wire [N-1:0] slot;
-  wire         hyp_ready;
+  wire         up;
+  wire         down;
+  wire         ev_illegal;
+  wire         ev_illegal_cw;
+  wire [N-1:0] slot_out;
+  wire [1:0]   quarter_out;
 
   prenc_position #(
     .N (N)
   ) u_position (
+    .clk           (clk),
+    .rst           (rst),
+    .quarter       (quarter),
+    .step          (step),
+    .step_cw       (step_cw),
+    .illegal       (illegal),
+    .slot          (slot),
+    .up            (up),
+    .down          (down),
+    .ev_illegal    (ev_illegal),
+    .ev_illegal_cw (ev_illegal_cw),
+    .slot_out      (slot_out),
+    .quarter_out   (quarter_out)
+  );
+
+  // One word per head, each with its converter.
+  wire [1:0]   flush;
+  wire [1:0]   law_on;
+  wire         realign_up;
+  wire         realign_down;
+  wire [N-1:0] addr1;
+  wire [N-1:0] addr2;
+  wire [N-1:0] word1;  // for waveforms
+  wire [N-1:0] word2;
+  wire [1:0]   full;
+  wire [N-1:0] base1;
+  wire [N-1:0] base2;
+  wire [1:0]   law;
+  wire [1:0]   supported;
+  wire         strobe_t;
+  wire         strobe_t2;  // the same as strobe_t
+  wire [1:0]   checked;
+  wire [1:0]   mismatch;
+  wire [1:0]   mismatch_lo;
+  wire [1:0]   mismatch_hi;
+  wire [5:0]   span1;
+  wire [5:0]   span2;
+  wire [1:0]   settled;
+  wire [1:0]   quiet;
+  wire         dual;     // two hypotheses open (mode 4)
+  wire         dual_cw;
+
+  localparam integer EXT_MAX = ((LOCK_ONE > LOCK_BOTH) ? LOCK_ONE : LOCK_BOTH) - 1 + LOCK_EXTRA;
+
+  prenc_track_word #(
+    .N           (N),
+    .TAPS        (TAPS),
+    .HEAD_OFFSET (0),
+    .SCORE_UP    (SCORE_UP),
+    .SCORE_LIMIT (SCORE_LIMIT),
+    .ERROR_WIDTH (ERROR_WIDTH),
+    .EXT_MAX     (EXT_MAX)
+  ) u_track1 (
+    .clk          (clk),
+    .rst          (rst),
+    .strobe       (strobe),
+    .head         (strobe_head1),
+    .up           (up),
+    .down         (down),
+    .illegal      (ev_illegal),
+    .slot         (slot),
+    .flush        (flush[0]),
+    .law_on       (law_on[0]),
+    .realign_up   (realign_up),
+    .realign_down (realign_down),
+    .dual         (dual),
+    .dual_cw      (dual_cw),
+    .clear_errors (clear_errors),
+    .addr         (addr1),
+    .word         (word1),
+    .full         (full[0]),
+    .base         (base1),
+    .law          (law[0]),
+    .supported    (supported[0]),
+    .strobe_q     (strobe_t),
+    .checked      (checked[0]),
+    .mismatch     (mismatch[0]),
+    .mismatch_lo  (mismatch_lo[0]),
+    .mismatch_hi  (mismatch_hi[0]),
+    .errors       (track1_errors),
+    .span         (span1),
+    .settled      (settled[0]),
+    .quiet        (quiet[0])
+  );
+
+  prenc_track_word #(
+    .N           (N),
+    .TAPS        (TAPS),
+    .HEAD_OFFSET (N - 1),
+    .SCORE_UP    (SCORE_UP),
+    .SCORE_LIMIT (SCORE_LIMIT),
+    .ERROR_WIDTH (ERROR_WIDTH),
+    .EXT_MAX     (EXT_MAX)
+  ) u_track2 (
+    .clk          (clk),
+    .rst          (rst),
+    .strobe       (strobe),
+    .head         (strobe_head2),
+    .up           (up),
+    .down         (down),
+    .illegal      (ev_illegal),
+    .slot         (slot),
+    .flush        (flush[1]),
+    .law_on       (law_on[1]),
+    .realign_up   (realign_up),
+    .realign_down (realign_down),
+    .dual         (dual),
+    .dual_cw      (dual_cw),
+    .clear_errors (clear_errors),
+    .addr         (addr2),
+    .word         (word2),
+    .full         (full[1]),
+    .base         (base2),
+    .law          (law[1]),
+    .supported    (supported[1]),
+    .strobe_q     (strobe_t2),
+    .checked      (checked[1]),
+    .mismatch     (mismatch[1]),
+    .mismatch_lo  (mismatch_lo[1]),
+    .mismatch_hi  (mismatch_hi[1]),
+    .errors       (track2_errors),
+    .span         (span2),
+    .settled      (settled[1]),
+    .quiet        (quiet[1])
+  );
+
+  wire [N-1:0] conv1;
+  wire [N-1:0] conv2;
+  wire         conv1_valid;  // always 1 after reset: every word is converted
+  wire         conv2_valid;
+
+  prenc_converter #(
+    .N        (N),
+    .ROM_FILE (ROM_FILE)
+  ) u_converter1 (
     .clk        (clk),
     .rst        (rst),
-    .quarter    (quarter),
-    .step       (step),
-    .step_cw    (step_cw),
-    .strobe     (strobe),
-    .word_full  (word_full),
-    .conv_valid (conv_valid),
-    .conv_pos   (conv_pos),
-    .slot       (slot),
-    .hyp_ready  (hyp_ready),
-    .pos_abs    (pos_abs),
-    .pos_hyb    (pos_hyb)
+    .word_valid (1'b1),
+    .word       (addr1),
+    .pos_valid  (conv1_valid),
+    .pos        (conv1)
   );
 
-  // Track monitors
-  wire run1_n_next;
-  wire run1_2n_next;
-  wire run1_long_next;
-  wire run1_n;
-  wire run2_n_next;
-  wire run2_2n_next;
-  wire run2_long_next;
-  wire run2_n;
-  wire restart    = ~word_full | illegal;
-  wire word_empty = (word_count == {($clog2(N+1)){1'b0}});
-
-  prenc_track_monitor #(
-    .N           (N),
-    .RUN_LONG    (RUN_LONG),
-    .ERROR_WIDTH (ERROR_WIDTH)
-  ) u_track1 (
-    .clk           (clk),
-    .rst           (rst),
-    .clear         (restart),
-    .fill          (strobe & ~word_full & ~strobe_cw),
-    .word_empty    (word_empty),
-    .check         (check_now),
-    .mismatch      (mismatch1_now),
-    .slot          (slot),
-    .clear_errors  (clear_errors),
-    .run_n_next    (run1_n_next),
-    .run_2n_next   (run1_2n_next),
-    .run_long_next (run1_long_next),
-    .run_n         (run1_n),
-    .errors        (track1_errors)
+  prenc_converter #(
+    .N        (N),
+    .ROM_FILE (ROM_FILE)
+  ) u_converter2 (
+    .clk        (clk),
+    .rst        (rst),
+    .word_valid (1'b1),
+    .word       (addr2),
+    .pos_valid  (conv2_valid),
+    .pos        (conv2)
   );
 
-  prenc_track_monitor #(
-    .N           (N),
-    .RUN_LONG    (RUN_LONG),
-    .ERROR_WIDTH (ERROR_WIDTH)
-  ) u_track2 (
-    .clk           (clk),
-    .rst           (rst),
-    .clear         (restart),
-    .fill          (strobe & ~word_full & strobe_cw),
-    .word_empty    (word_empty),
-    .check         (check_now),
-    .mismatch      (mismatch2_now),
-    .slot          (slot),
-    .clear_errors  (clear_errors),
-    .run_n_next    (run2_n_next),
-    .run_2n_next   (run2_2n_next),
-    .run_long_next (run2_long_next),
-    .run_n         (run2_n),
-    .errors        (track2_errors)
-  );
+  // Events carried alongside the track words, then the J1 registers: each track's
+  // offset and evidence, one clock before the judge.
+  reg         illegal_t_reg;
+  reg         illegal_cw_t_reg;
+  reg [N-1:0] slot_t_reg;
+  reg         strobe_j_reg;
+  reg         illegal_j_reg;
+  reg         illegal_cw_j_reg;
+  reg [N-1:0] slot_j_reg;
+  reg [1:0]   full_j_reg;
+  reg [N-1:0] off1_j_reg;
+  reg [N-1:0] off2_j_reg;
+  reg [5:0]   span1_j_reg;
+  reg [5:0]   span2_j_reg;
+  reg [1:0]   settled_j_reg;
+  reg [1:0]   quiet_j_reg;
+  reg [1:0]   checked_j_reg;
+  reg [1:0]   mismatch_j_reg;
+  reg [1:0]   mismatch_lo_j_reg;
+  reg [1:0]   mismatch_hi_j_reg;
 
-  // Modes
-  wire [N-1:0] error_slot;  // for waveforms
+  always @(posedge clk) begin
+    illegal_t_reg     <= ev_illegal;
+    illegal_cw_t_reg  <= ev_illegal_cw;
+    slot_t_reg        <= slot;
+    strobe_j_reg      <= strobe_t;
+    illegal_j_reg     <= illegal_t_reg;
+    illegal_cw_j_reg  <= illegal_cw_t_reg;
+    slot_j_reg        <= slot_t_reg;
+    full_j_reg        <= full;
+    off1_j_reg        <= conv1 - base1;
+    off2_j_reg        <= conv2 - base2;
+    span1_j_reg       <= span1;
+    span2_j_reg       <= span2;
+    settled_j_reg     <= settled;
+    quiet_j_reg       <= quiet;
+    checked_j_reg     <= checked;
+    mismatch_j_reg    <= mismatch;
+    mismatch_lo_j_reg <= mismatch_lo;
+    mismatch_hi_j_reg <= mismatch_hi;
+    if (rst) begin
+      illegal_t_reg     <= 1'b0;
+      slot_t_reg        <= {N{1'b0}};
+      strobe_j_reg      <= 1'b0;
+      illegal_j_reg     <= 1'b0;
+      illegal_cw_j_reg  <= 1'b0;
+      slot_j_reg        <= {N{1'b0}};
+      full_j_reg        <= 2'b00;
+      off1_j_reg        <= {N{1'b0}};
+      off2_j_reg        <= {N{1'b0}};
+      span1_j_reg       <= 6'd0;
+      span2_j_reg       <= 6'd0;
+      settled_j_reg     <= 2'b00;
+      quiet_j_reg       <= 2'b00;
+      checked_j_reg     <= 2'b00;
+      mismatch_j_reg    <= 2'b00;
+      mismatch_lo_j_reg <= 2'b00;
+      mismatch_hi_j_reg <= 2'b00;
+    end
+  end
+
+  // The judge.
+  wire [N-1:0] offset;
 
   prenc_mode_fsm #(
-    .N (N)
+    .N          (N),
+    .LOCK_BOTH  (LOCK_BOTH),
+    .LOCK_ONE   (LOCK_ONE),
+    .LOCK_EXTRA (LOCK_EXTRA),
+    .DUAL_VOTES (DUAL_VOTES),
+    .DUAL_SPAN  (DUAL_SPAN)
   ) u_mode_fsm (
-    .clk            (clk),
-    .rst            (rst),
-    .illegal        (illegal),
-    .check          (check_now),
-    .mismatch1      (mismatch1_now),
-    .mismatch2      (mismatch2_now),
-    .slot           (slot),
-    .word_full      (word_full),
-    .run1_n_next    (run1_n_next),
-    .run2_n_next    (run2_n_next),
-    .run1_2n_next   (run1_2n_next),
-    .run2_2n_next   (run2_2n_next),
-    .run1_long_next (run1_long_next),
-    .run2_long_next (run2_long_next),
-    .hyp_ready      (hyp_ready),
-    .mode           (mode),
-    .pos_valid      (pos_valid),
-    .flush          (flush),
-    .error_slot     (error_slot)
+    .clk          (clk),
+    .rst          (rst),
+    .strobe       (strobe_j_reg),
+    .illegal      (illegal_j_reg),
+    .illegal_cw   (illegal_cw_j_reg),
+    .slot         (slot_j_reg),
+    .full         (full_j_reg),
+    .off1         (off1_j_reg),
+    .off2         (off2_j_reg),
+    .span1        (span1_j_reg),
+    .span2        (span2_j_reg),
+    .settled      (settled_j_reg),
+    .quiet        (quiet_j_reg),
+    .checked      (checked_j_reg),
+    .mismatch     (mismatch_j_reg),
+    .mismatch_lo  (mismatch_lo_j_reg),
+    .mismatch_hi  (mismatch_hi_j_reg),
+    .supported    (supported),
+    .law          (law),
+    .mode         (mode),
+    .pos_valid    (pos_valid),
+    .dual         (dual),
+    .dual_cw      (dual_cw),
+    .offset       (offset),
+    .flush        (flush),
+    .law_on       (law_on),
+    .realign_up   (realign_up),
+    .realign_down (realign_down)
   );
 
-  // Datapath outputs the core does not use, kept for waveforms (Verilator's
-  // unused-signal pattern).
-  wire unused_ok = &{1'b0, strobe_moved, strobe_head1, strobe_head2, word_known, predict1,
-                     predict2, check_d, expect1_d, expect2_d, mismatch1_d, mismatch2_d,
-                     error_slot};
+  wire unused_ok = &{1'b0, strobe_cw, strobe_moved, strobe_t2, word1, word2,
+                     conv1_valid, conv2_valid};
 
+  assign pos_abs      = slot_out + offset;
+  assign pos_hyb      = {pos_abs, quarter_out};
   assign position     = resolution ? pos_hyb : {2'b00, pos_abs};
   assign direction    = step_cw;
   assign track1_pos   = pos_abs;
   assign track2_pos   = pos_abs;
-  assign track1_valid = pos_valid & run1_n;
-  assign track2_valid = pos_valid & run2_n;
+  assign track1_valid = pos_valid & supported[0];
+  assign track2_valid = pos_valid & supported[1];
 
 endmodule
 

@@ -1,2 +1,2 @@
-// Sources of prenc_mode_fsm, relative to this folder (verilator -F, or -f from rtl/).
+// Sources of prenc_mode_fsm, relative to this folder.
 prenc_mode_fsm.v

@@ -1,31 +1,24 @@
-// prenc_position: the position the reader holds, counted from the quadrature and
-// placed on the disc by the converter.
+// prenc_position: the slot count, the reader's events, and the count delayed to
+// meet the judge's decision.
 //
-// An incremental slot count follows the quadrature decoder: +1 on a CW step into
-// q = 0 (a slot boundary crossed CW), -1 on a CCW step into q = 3. It never jumps,
-// and an illegal transition does not move it. When the code word becomes full, its
-// converted slot p and the slot count at the strobe that completed it give the
-// offset between the count and the disc; from then on
-//   pos_abs = slot count + offset (mod 2^N),  pos_hyb = 4 * pos_abs + q.
-// Whether that position is verified is the mode state machine's business.
-//
-// Timing: the word after a strobe on clock k is converted on clock k+2; the slot
-// count of that strobe is carried alongside (word_slot, then word_slot_d).
+// From the quadrature decoder's registered step (clock t) it registers on t+1 the
+// slot count and the event the rest of the core sees on that clock: `up` (a CW
+// step into q = 0, a slot boundary), `down` (a CCW step into q = 3) or `illegal`.
+// An illegal transition (A and B changed together) moved the disc two quarters;
+// the count takes the pair of steps in the last legal direction (a slot when that
+// crosses a boundary) and the judge keeps the other way open. The count and the
+// quarter are also delayed DECISION_DELAY = 3 more clocks (slot_out, quarter_out),
+// so that count + offset meets the judge's verdict at one latency.
+// Model: prenc.position.Position.
 //
 // Parameters
-//   N   code word length, 2..24
+//   N   code word length, 2..24 (the count is modulo 2^N)
 //
 // Ports
-//   quarter, step, step_cw   from prenc_quadrature
-//   strobe                   from prenc_sampler
-//   word_full                from prenc_shift_register
-//   conv_valid, conv_pos     from prenc_converter (its input: the word, word_full)
-//   slot                     incremental slot count (mod 2^N); at a strobe, the
-//                            strobe's slot
-//   hyp_ready                the offset of the current word is loaded, or loads now
-//   pos_abs                  absolute slot p (registered count + offset)
-//   pos_hyb                  hybrid position 4p + q, coherent with pos_abs
-
+//   quarter, step, step_cw, illegal   from prenc_quadrature (step_cw holds the last
+//                                     legal direction)
+//   slot, up, down, ev_illegal, ev_illegal_cw   registered on t+1
+//   slot_out, quarter_out             the same, three clocks later
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -38,14 +31,14 @@ module prenc_position #(
   input  wire [1:0]   quarter,
   input  wire         step,
   input  wire         step_cw,
-  input  wire         strobe,
-  input  wire         word_full,
-  input  wire         conv_valid,
-  input  wire [N-1:0] conv_pos,
+  input  wire         illegal,
   output wire [N-1:0] slot,
-  output wire         hyp_ready,
-  output wire [N-1:0] pos_abs,
-  output wire [N+1:0] pos_hyb
+  output wire         up,
+  output wire         down,
+  output wire         ev_illegal,
+  output wire         ev_illegal_cw,
+  output wire [N-1:0] slot_out,
+  output wire [1:0]   quarter_out
 );
 
   generate
@@ -57,45 +50,56 @@ module prenc_position #(
 
   reg [N-1:0] slot_reg;
   reg [1:0]   quarter_reg;
-  reg [N-1:0] word_slot_reg;
-  reg [N-1:0] word_slot_d_reg;
-  reg [N-1:0] offset_reg;
-  reg         hyp_valid_reg;
+  reg         up_reg;
+  reg         down_reg;
+  reg         illegal_reg;
+  reg         illegal_cw_reg;
+  reg [N-1:0] slot_d1_reg;
+  reg [N-1:0] slot_d2_reg;
+  reg [N-1:0] slot_d3_reg;
+  reg [1:0]   quarter_d1_reg;
+  reg [1:0]   quarter_d2_reg;
+  reg [1:0]   quarter_d3_reg;
 
-  wire load = conv_valid & ~hyp_valid_reg;
+  wire move_up   = (step & step_cw & (quarter == 2'd0)) | (illegal & step_cw & ~quarter[1]);
+  wire move_down = (step & ~step_cw & (quarter == 2'd3)) | (illegal & ~step_cw & quarter[1]);
 
   always @(posedge clk) begin
-    quarter_reg     <= quarter;
-    word_slot_d_reg <= word_slot_reg;
-    if (step && step_cw && quarter == 2'd0) begin
+    {slot_d3_reg, slot_d2_reg, slot_d1_reg}          <= {slot_d2_reg, slot_d1_reg, slot_reg};
+    {quarter_d3_reg, quarter_d2_reg, quarter_d1_reg} <=
+        {quarter_d2_reg, quarter_d1_reg, quarter_reg};
+    if (move_up) begin
       slot_reg <= slot_reg + 1'b1;
-    end else if (step && !step_cw && quarter == 2'd3) begin
+    end else if (move_down) begin
       slot_reg <= slot_reg - 1'b1;
     end
-    if (strobe) begin
-      word_slot_reg <= slot_reg;
-    end
-    if (load) begin
-      offset_reg    <= conv_pos - word_slot_d_reg;
-      hyp_valid_reg <= 1'b1;
-    end
-    if (!word_full) begin
-      hyp_valid_reg <= 1'b0;
-    end
+    quarter_reg    <= quarter;
+    up_reg         <= move_up;
+    down_reg       <= move_down;
+    illegal_reg    <= illegal;
+    illegal_cw_reg <= step_cw;
     if (rst) begin
-      slot_reg        <= {N{1'b0}};
-      quarter_reg     <= 2'd0;
-      word_slot_reg   <= {N{1'b0}};
-      word_slot_d_reg <= {N{1'b0}};
-      offset_reg      <= {N{1'b0}};
-      hyp_valid_reg   <= 1'b0;
+      slot_reg       <= {N{1'b0}};
+      quarter_reg    <= 2'd0;
+      up_reg         <= 1'b0;
+      down_reg       <= 1'b0;
+      illegal_reg    <= 1'b0;
+      slot_d1_reg    <= {N{1'b0}};
+      slot_d2_reg    <= {N{1'b0}};
+      slot_d3_reg    <= {N{1'b0}};
+      quarter_d1_reg <= 2'd0;
+      quarter_d2_reg <= 2'd0;
+      quarter_d3_reg <= 2'd0;
     end
   end
 
-  assign slot      = slot_reg;
-  assign hyp_ready = hyp_valid_reg | load;
-  assign pos_abs   = slot_reg + offset_reg;
-  assign pos_hyb   = {pos_abs, quarter_reg};
+  assign slot          = slot_reg;
+  assign up            = up_reg;
+  assign down          = down_reg;
+  assign ev_illegal    = illegal_reg;
+  assign ev_illegal_cw = illegal_cw_reg;
+  assign slot_out      = slot_d3_reg;
+  assign quarter_out   = quarter_d3_reg;
 
 endmodule
 

@@ -15,15 +15,22 @@
 4. Fault campaign of the reference reader (prenc.campaign): 10^6 strobes each at
    N = 6 and N = 10, seeded, every fault of the datasheet in random mixes; wrong
    valid positions must be zero.
+4b. The core's goals (prenc.goals, issue 15's table): per scenario at N = 10, the
+   share of clocks valid and the slots of travel to the first valid position of the
+   core (its clock-level model, which the RTL equals clock for clock in
+   tb/prenc_core) beside the plain verifying reader (prenc.plain_reader: drop
+   everything on any disagreement, re-verify N + 1 strobes), at FILTER 0 and 3,
+   with the wrong valid clocks of each.
 5. Fault campaign of the RTL core (tb/prenc_core/bench_prenc_core.py on Verilator):
    at least 10^5 strobes at N = 10, judged against the true angle clock by clock.
 6. Host link update rate: answers per second of board time when streaming back to
    back (tb/prenc_host_link/bench_prenc_host_link.py), per kind, at 115200, 1 M and
    3 Mbaud, against the line's limit (baud / 10 / frame bytes).
 7. Synthesis (scripts/synth.py, YoWASP Yosys + nextpnr): Fmax and utilization of the
-   core alone on iCE40 HX8K and ECP5-85F, and of each board top, at N = 10 and 16.
-   The core alone is placed with the issue's aims as constraints (100 MHz on HX8K,
-   150 MHz on ECP5) and timing allowed to fail, to read the Fmax it reaches.
+   core alone on iCE40 HX8K, ECP5-25k and ECP5-85F (the UP5K is measured through the
+   iCEBreaker top: its package has too few pins for the core alone), and of each board
+   top, at N = 10 and 16. The core alone is placed with issue 15's aims as constraints
+   (120 MHz on iCE40, 150 MHz on ECP5) and timing allowed to fail, to read its Fmax.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios); the
    time to rebuild Table 1 to n = 10 (20 s of exact search per open entry); the RTL
@@ -122,9 +129,15 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
     import synth
 
     rows = []
-    for target, aim in (("ice40-hx8k", 100.0), ("ecp5-85k", 150.0)):
+    for target, aim in (("ice40-hx8k", 120.0), ("ice40-up5k", 120.0), ("ecp5-25k", 150.0), ("ecp5-85k", 150.0)):
         for n in (10, 16):
             t = synth.TARGETS[target]
+            if target == "ice40-up5k":
+                rows.append((f"core alone, {t.name}", n, "not placed alone: the 48-pin package has fewer pins "
+                             "than the core's ports (the iCEBreaker board top below is the UP5K figure)"))
+                continue
+            if target == "ecp5-25k" and n == 16:
+                continue
             rom_kbit = (1 << n) * n / 1024
             if t.family == "ice40" and rom_kbit > 128:
                 rows.append((f"core alone, {t.name}", n, f"not built: the {rom_kbit:.0f} kbit ROM exceeds "
@@ -241,6 +254,8 @@ def main() -> int:
         print(f"   {n:>3} {r.strobes:>9,} {r.events:>9,} {r.segments:>8} {r.wrong_valid:>11} "
               f"{r.availability:>11.1%} {time.perf_counter() - t0:>6.0f}s  {faults}")
 
+    failed |= goals_section()
+
     print("\n5. Fault campaign, RTL core on Verilator (N = 10, FILTER = 0, seed 1)")
     t0 = time.perf_counter()
     r = rtl_campaign(10, 0, 100_000, 1)
@@ -266,6 +281,30 @@ def main() -> int:
 
     failed |= nd_section()
     return 1 if failed else 0
+
+
+def goals_section() -> bool:
+    from prenc.goals import goals, measure
+    from prenc.plain_reader import PlainReader
+    from prenc.reader import Reader
+
+    n, failed = 10, False
+    print("\n4b. The core's goals (N = 10): share of clocks valid / slots to the first valid position")
+    print(f"   {'scenario':<27} {'F':>2} {'core':>15} {'plain reader':>15} {'core / plain':>12} {'goal':>12} "
+          f"{'wrong':>9}")
+    for filter_len in (0, 3):
+        for g in goals(n):
+            enc = g.run(n)
+            a = measure(g, Reader(Code(n), filter_len), n, filter_len, enc)
+            b = measure(g, PlainReader(Code(n), filter_len), n, filter_len, enc)
+            failed |= a.wrong != 0
+            fv = lambda m: "never" if m.first_valid is None else f"{m.first_valid:.1f}"
+            ratio = f"{a.availability / b.availability:.2f}x" if b.availability else "inf"
+            goal = f">={g.availability:.2f}" + (f" <={g.first_valid}" if g.first_valid else "")
+            print(f"   {g.name:<27} {filter_len:>2} {a.availability:>7.3f} {fv(a):>7} {b.availability:>7.3f} "
+                  f"{fv(b):>7} {ratio:>12} {goal:>12} {a.wrong:>4}/{b.wrong:<4}"
+                  + ("" if a.meets(g) else "  short of goal"))
+    return failed
 
 
 ND_INSTANCES = ((6, 2), (7, 2), (7, 3), (8, 3), (9, 3), (8, 4), (9, 4), (10, 4))

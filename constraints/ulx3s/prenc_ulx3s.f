@@ -2,13 +2,10 @@
 ../../rtl/prenc_input_conditioner.v
 ../../rtl/prenc_quadrature.v
 ../../rtl/prenc_sampler.v
-../../rtl/prenc_shift_register.v
-../../rtl/prenc_predictor.v
-../../rtl/prenc_datapath.v
 ../../rtl/prenc_converter.v
 ../../rtl/prenc_rom_check.v
 ../../rtl/prenc_position.v
-../../rtl/prenc_track_monitor.v
+../../rtl/prenc_track_word.v
 ../../rtl/prenc_mode_fsm.v
 ../../rtl/prenc_core.v
 ../../rtl/prenc_crc16.v

@@ -19,13 +19,16 @@ the counts; `make bench` prints them.
 
 from __future__ import annotations
 
+from collections import deque
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .debruijn import Code
 from .mode_fsm import Mode
-from .reader import Illegal, Reader, Step
+from .position import DECISION_DELAY
+from .quadrature import QuadratureOutput
+from .reader import Reader
 
 
 @dataclass
@@ -50,8 +53,9 @@ def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: Camp
     n, length = code.n, code.length
     seq = code.sequence.astype(np.int64)
     h = int(rng.integers(0, 4 * length))  # true hybrid position
-    reader = Reader(code, quarter=h % 4)
-    start = reader.strobes
+    reader = Reader(code)
+    last_cw = 1
+    truth: deque = deque([None] * DECISION_DELAY, maxlen=DECISION_DELAY + 1)
     # Fault mix of this segment.
     p_misread = float(rng.choice([0.0, 1e-3, 1e-2, 3e-2]))
     contaminated = [set(rng.integers(0, length, int(rng.integers(0, 3))).tolist()) for _ in range(2)]
@@ -59,8 +63,9 @@ def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: Camp
     if rng.random() < 0.4:
         dead = (int(rng.integers(1, 3)), str(rng.choice(["stuck0", "stuck1", "noise"])),
                 int(rng.integers(0, 4 * strobes)), int(rng.integers(0, 4 * strobes)))
-    p_missed = float(rng.choice([0.0, 1e-4, 1e-3]))
+    p_missed = float(rng.choice([0.0, 1e-4, 1e-3, 1e-2]))
     p_glitch = float(rng.choice([0.0, 1e-3, 1e-2]))
+    p_idle = float(rng.choice([0.0, 0.2, 0.5]))
     direction = 1 if rng.random() < 0.5 else -1
     p_reverse = float(rng.choice([0.01, 0.05, 0.2]))
     k = 0
@@ -81,35 +86,47 @@ def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: Camp
             result.faults["dead_head_reads"] += 1
         return bits[0], bits[1]
 
-    def emit(ev, judged: bool = True) -> None:
-        out = reader.event(ev)
+    def emit(step: int, cw: int, illegal: int, judged: bool = True, rst: int = 0) -> None:
+        h1, h2 = heads(h) if step else (0, 0)
+        q = QuadratureOutput(h % 4, step, cw, illegal, 0, 0)
+        out = reader.clock_decoded(q, h1, h2, rst=rst)
+        truth.append(h % (4 * length) if judged else None)
+        expected = truth[0]
         result.events += 1
-        result.mode_events[out.mode.name] += 1
-        if out.valid and judged:
+        result.mode_events[Mode(out.mode).name] += 1
+        if out.valid and expected is not None:
             result.valid_events += 1
-            if out.pos_hyb != h % (4 * length):
+            if out.pos_hyb != expected:
                 result.wrong_valid += 1
 
-    while reader.strobes - start < strobes:
+    for _ in range(4):
+        emit(0, 1, 0, judged=False, rst=1)
+    while reader.strobes < strobes:
         k += 1
+        if p_idle and rng.random() < p_idle:
+            emit(0, last_cw, 0)
+            continue
         if rng.random() < p_reverse:
             direction = -direction
         if p_missed and rng.random() < p_missed:
             h += 2 * direction
             result.faults["missed_states"] += 1
-            emit(Illegal(h % 4))
+            emit(0, last_cw, 1)
             continue
         if p_glitch and rng.random() < p_glitch:
             result.faults["glitches"] += 1
             g = 1 if rng.random() < 0.5 else -1
-            h1, h2 = heads(h)
-            # Inside a glitch the pins themselves are a quarter off: not judged.
-            emit(Step(int(g > 0), (h + g) % 4, h1, h2), judged=False)
-            emit(Step(int(g < 0), h % 4, h1, h2))
+            h += g
+            emit(1, int(g > 0), 0, judged=False)  # the pins are a quarter off: not judged
+            h -= g
+            last_cw = int(g < 0)
+            emit(1, last_cw, 0, judged=False)
         h += direction
-        h1, h2 = heads(h)
-        emit(Step(int(direction > 0), h % 4, h1, h2))
-    result.strobes += reader.strobes - start
+        last_cw = int(direction > 0)
+        emit(1, last_cw, 0)
+    for _ in range(DECISION_DELAY + 1):
+        emit(0, last_cw, 0)
+    result.strobes += reader.strobes
     result.segments += 1
 
 

@@ -110,7 +110,7 @@ def tell(trace_path: str | Path, out_dir: str | Path) -> int:
         print(f"    clock {c:>6}  mode {Mode(int(mode[c])).name:<12} pos_valid {int(valid[c])}  "
               f"pos_abs {int(pos_abs[c]):>4}  position {int(position[c]):>5}")
     print(f"  start-up: first valid at clock {verdict.first_valid} "
-          f"(word: N strobes, verification: 2N more slots on both tracks)")
+          f"(both heads agree over N + 1 slots each, from clock 0 at rest)")
     print(f"  protected core: {verdict.wrong} wrong valid clocks; availability {verdict.availability:.1%}; "
           + ", ".join(f"{k} {v:.0%}" for k, v in verdict.modes.items() if v))
     print(f"  without protection: {n_wrong} wrong positions output in {n_out} strobes")

@@ -1,34 +1,36 @@
-"""The whole reader at the level of events: the reference the RTL core must agree with.
+"""The reader core, clock by clock: the model that prenc_core must equal.
 
-Events are what the quadrature decoder makes of the sync track, each legal step
-with the two head readings taken with it, and illegal transitions:
+    reader = Reader(Code(10), filter_len=2)
+    out = reader.clock([head1, head2, a, b], rst)   # outputs after the rising edge
+    out.valid, out.pos_abs, out.pos_hyb, out.mode, out.dual
 
-    reader = Reader(Code(10))
-    for ev in events:                  # Step(cw, quarter, head1, head2) or Illegal()
-        out = reader.event(ev)         # ReaderState after it
-        out.valid, out.pos_abs, out.pos_hyb, out.mode
+The stages, each the model of one RTL module, registered as in the RTL:
 
-It keeps no clock: one event is one step of the disc as the decoder saw it. It
-mirrors prenc_core's stages (sampler rule, shift register, predictor, converter,
-position count, track monitors, mode state machine) with the ROM replaced by the
-code's own position lookup. `events_from_run` makes the event stream from a
-virtual-encoder run through the conditioner and quadrature models, as the RTL
-sees it; `prenc.campaign` makes events straight from a trajectory of quarters.
+    pins -> InputConditioner -> QuadratureDecoder -> Sampler (strobes, heads)
+                                                  -> Position (count, events)
+         -> TrackWord x2 (one head each; raw or law mode) -> converter (the ROM)
+         -> J1 registers (offset of each track's window) -> ModeFsm (the judge)
+         -> pos_abs = count (delayed) + offset, pos_valid, mode
+
+`clock_decoded` enters after the quadrature decoder, for the fault campaign.
+Latency: outputs show the pins LATENCY + FILTER clocks earlier.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable, NamedTuple
+from typing import NamedTuple, Sequence
 
 from .debruijn import Code
 from .encoder import SIGNALS, EncoderRun
 from .input_conditioner import InputConditioner
-from .mode_fsm import Mode, ModeFsm
-from .predictor import expected_heads
-from .quadrature import QuadratureDecoder
-from .shift_register import ShiftRegister
-from .track_monitor import TrackMonitor, TrackRun
+from .mode_fsm import DUAL_SPAN, DUAL_VOTES, JudgeInput, Mode, ModeFsm
+from .position import Position
+from .quadrature import QuadratureDecoder, QuadratureOutput
+from .sampler import Sampler
+from .track_word import SCORE_LIMIT, SCORE_UP, TrackEvent, TrackWord
+
+LATENCY = 6  # clocks from a pin to pos_abs / pos_valid, plus FILTER
 
 
 class Step(NamedTuple):
@@ -48,124 +50,92 @@ class Illegal(NamedTuple):
     clock: int = -1
 
 
-class Check(NamedTuple):
-    """One strobe with a full word: the heads against the prediction, and after it."""
-
-    slot: int           # incremental slot count of the strobe
-    mismatch1: int
-    mismatch2: int
-    mode: Mode
-    valid: bool
-    pos_abs: int
-
-
 @dataclass
-class ReaderState:
-    mode: Mode
-    valid: bool
+class ReaderOutput:
+    valid: int
     pos_abs: int
     pos_hyb: int
-    incremental: int  # quadrature steps, signed
+    mode: int
+    dual: int
 
 
 class Reader:
-    def __init__(self, code: Code, run_long: int | None = None, quarter: int = 0):
+    def __init__(self, code: Code, filter_len: int = 0, lock_both: int | None = None,
+                 lock_one: int | None = None, dual_votes: int = DUAL_VOTES,
+                 dual_span: int = DUAL_SPAN, score_up: int = SCORE_UP, score_limit: int = SCORE_LIMIT):
         self.code = code
-        self.n, self.length = code.n, code.length
-        self.mask = self.length - 1
-        self.word = ShiftRegister(code.n)
-        self.track1 = TrackMonitor(code.n, run_long)
-        self.track2 = TrackMonitor(code.n, run_long)
-        self.fsm = ModeFsm()
-        self.slot = 0           # incremental slot count, modulo 2^N
-        self.quarter = quarter
-        self.offset = 0         # disc slot minus slot count, from the converter
-        self.incremental = 0
-        self.have_last = False  # sampler: a strobe since reset or the last break
-        self.last_cw = 0
-        self.checks: list[Check] = []
+        self.n = code.n
+        self.mask = code.mask
+        self.conditioner = InputConditioner(4, filter_len)
+        self.quadrature = QuadratureDecoder()
+        self.sampler = Sampler()
+        self.position = Position(code.n)
+        self.fsm = ModeFsm(code.n, lock_both=lock_both, lock_one=lock_one, dual_votes=dual_votes,
+                           dual_span=dual_span)
+        ext_max = max(self.fsm.lock_one, self.fsm.lock_both) - 1 + self.fsm.lock_extra
+        self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max),
+                       TrackWord(code, code.n - 1, score_up, score_limit, ext_max)]
+        self.j1 = JudgeInput()
+        self.t_illegal = self.t_illegal_cw = 0
+        self.clean = [0, 0, 0, 1]
         self.strobes = 0
-        self._clock = -1        # clock of the step being handled, where known
-        self._check_clock = -2  # clock of the step of the last check
 
-    # -- outputs
-    @property
-    def pos_abs(self) -> int:
-        return (self.slot + self.offset) & self.mask
+    def output(self) -> ReaderOutput:
+        pos = (self.position.slot_d[-1] + self.fsm.offset) & self.mask
+        return ReaderOutput(int(self.fsm.valid), pos, 4 * pos + self.position.quarter_d[-1],
+                            int(self.fsm.mode), self.fsm.dual)
 
-    def state(self) -> ReaderState:
-        return ReaderState(self.fsm.mode, self.fsm.valid, self.pos_abs,
-                           4 * self.pos_abs + self.quarter, self.incremental)
+    def _core(self, quad_before: QuadratureOutput, heads_before: Sequence[int], rst: int) -> None:
+        """Everything after the quadrature decoder, for one rising edge."""
+        tracks, pos, s = self.tracks, self.position, self.sampler.out
+        self.fsm.clock(self.j1, tuple(t.supported for t in tracks), tuple(t.law for t in tracks), rst=rst)
+        self.j1 = JudgeInput(
+            strobe=tracks[0].strobe, illegal=self.t_illegal, illegal_cw=self.t_illegal_cw,
+            slot=(tracks[0].base + tracks[0].index) & self.mask,
+            full=tuple(t.full for t in tracks), span=tuple(t.span for t in tracks),
+            settled=tuple(t.settled for t in tracks), quiet=tuple(t.is_quiet for t in tracks),
+            off=tuple((self.code.position(t.word) - t.base) & self.mask for t in tracks),
+            checked=tuple(t.checked for t in tracks), mismatch=tuple(t.mismatch for t in tracks),
+            mismatch_lo=tuple(t.mismatch_lo for t in tracks), mismatch_hi=tuple(t.mismatch_hi for t in tracks))
+        if rst:
+            self.j1 = JudgeInput()
+        flush, law_on, realign, dual, dual_cw = self._ctrl
+        for h, t in enumerate(tracks):
+            ev = TrackEvent(strobe=s.strobe, up=pos.up, down=pos.down, illegal=pos.illegal,
+                            head=s.head1 if h == 0 else s.head2)
+            t.clock(ev, pos.slot, flush=flush[h], law_on=law_on[h], realign=realign,
+                    dual=dual, dual_cw=dual_cw, rst=rst)
+        self.t_illegal, self.t_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
+        self.strobes += s.strobe and not rst
+        pos.clock(quad_before, rst=rst)
+        self.sampler.clock(heads_before[0], heads_before[1], quad_before.step, quad_before.step_cw,
+                           quad_before.quarter, break_in=quad_before.illegal, rst=rst)
 
-    # -- events
-    def event(self, ev: Step | Illegal) -> ReaderState:
-        if isinstance(ev, Illegal):
-            self._illegal(ev.quarter)
-            if self.checks and ev.clock >= 0 and self._check_clock == ev.clock - 1:
-                # The RTL decides a strobe's check one clock after the step, on the
-                # same clock as this illegal transition: it shows both together.
-                self.checks[-1] = self.checks[-1]._replace(mode=self.fsm.mode, valid=self.fsm.valid,
-                                                           pos_abs=self.pos_abs)
-        else:
-            self._clock = ev.clock
-            self._step(ev)
-        return self.state()
+    def _latch_ctrl(self) -> None:
+        """The judge's registered outputs, as the tracks see them on this edge."""
+        f = self.fsm
+        self._ctrl = (list(f.flush), list(f.law_on), f.realign, f.dual, f.dual_cw)
 
-    def run(self, events: Iterable[Step | Illegal]) -> list[ReaderState]:
-        return [self.event(ev) for ev in events]
+    def clock(self, raw: Sequence[int], rst: int = 0) -> ReaderOutput:
+        quad_before = self.quadrature.output()
+        clean_before = self.clean
+        self._latch_ctrl()
+        self._core(quad_before, clean_before, rst)
+        self.quadrature.clock(clean_before[2], clean_before[3], rst=rst)
+        self.clean = self.conditioner.clock(list(raw), rst=rst)
+        return self.output()
 
-    def _restart(self) -> None:
-        """The word is empty: tracks and bad marks start over."""
-        self.word.clock(0, 0, 0, 0, 0, flush=1)
-        for track in (self.track1, self.track2):
-            track.next(True, False, False, 0)
-            track.commit()
-        self.fsm.bad1 = self.fsm.bad2 = False
+    def clock_decoded(self, quad: QuadratureOutput, head1: int, head2: int, rst: int = 0) -> ReaderOutput:
+        """One edge with `quad` as the decoder's registers and the heads read with it."""
+        self.sampler.head1_d, self.sampler.head2_d = head1, head2
+        self._latch_ctrl()
+        self._core(quad, (head1, head2), rst)
+        return self.output()
 
-    def _illegal(self, quarter: int) -> None:
-        self.quarter = quarter
-        self.have_last = False
-        none = TrackRun(False, False, False)
-        self.fsm.next(True, False, False, False, self.slot, True, none, none)
-        self.fsm.commit()
-        self._restart()
-
-    def _step(self, ev: Step) -> None:
-        self.incremental += 1 if ev.cw else -1
-        self.quarter = ev.quarter
-        if ev.cw and ev.quarter == 0:
-            self.slot = (self.slot + 1) & self.mask
-        elif not ev.cw and ev.quarter == 3:
-            self.slot = (self.slot - 1) & self.mask
-        if ev.quarter == (2 if ev.cw else 1):
-            self._strobe(ev.cw, ev.head1, ev.head2)
-
-    def _strobe(self, cw: int, head1: int, head2: int) -> None:
-        self.strobes += 1
-        moved = int(not self.have_last or cw == self.last_cw)
-        self.have_last, self.last_cw = True, cw
-        before = self.word.output()
-        flush = False
-        if before.full:
-            e1, e2 = expected_heads(self.code, before.word, cw, moved)
-            m1, m2 = int(head1 != e1), int(head2 != e2)
-            run1 = self.track1.next(False, True, bool(m1), self.slot)
-            run2 = self.track2.next(False, True, bool(m2), self.slot)
-            flush = self.fsm.next(False, True, bool(m1), bool(m2), self.slot, True, run1, run2)
-            self.track1.commit()
-            self.track2.commit()
-            self.fsm.commit()
-            head1, head2 = e1, e2  # a full word advances by the law
-        else:
-            (self.track2 if cw else self.track1).feed(self.slot, before.count == 0)
-        after = self.word.clock(1, cw, moved, head1, head2)
-        if flush:
-            self._restart()
-        elif after.full and not before.full:
-            self.offset = (self.code.position(after.word) - self.slot) & self.mask
-        if before.full:
-            self.checks.append(Check(self.slot, m1, m2, self.fsm.mode, self.fsm.valid, self.pos_abs))
-            self._check_clock = self._clock
+    def run(self, enc: EncoderRun, reset_clocks: int = 4, tail: int = 0) -> list[ReaderOutput]:
+        rows = list(zip(*(enc.signals[s].tolist() for s in SIGNALS)))
+        rows += rows[-1:] * tail
+        return [self.clock(list(r), rst=int(k < reset_clocks)) for k, r in enumerate(rows)]
 
 
 def events_from_run(enc: EncoderRun, filter_len: int = 0, reset_clocks: int = 4,

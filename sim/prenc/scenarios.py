@@ -31,7 +31,7 @@ from .trajectory import Trajectory
 
 def core_latency(filter_len: int) -> int:
     """Clocks from the pins to prenc_core's pos_abs, pos_hyb and pos_valid."""
-    return 3 + filter_len
+    return 6 + filter_len
 
 
 def max_speed(filter_len: int) -> float:

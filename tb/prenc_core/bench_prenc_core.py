@@ -17,7 +17,7 @@ import cocotb
 
 from prenc.encoder import Disc, VirtualEncoder
 from prenc.faults import Bounce, ContaminatedSlot, DeadHead, MissedQuadratureState, RandomMisreads
-from prenc.reader import Reader, events_from_run
+from prenc.reader import Reader
 from prenc.debruijn import Code
 from prenc.scenarios import core_latency, judge, max_speed
 from prenc.trajectory import Trajectory
@@ -48,11 +48,11 @@ async def campaign(dut):
             faults.append(DeadHead(int(rng.integers(1, 3)), str(rng.choice(["stuck0", "stuck1", "noise"])),
                                    start_clock=int(rng.integers(0, clocks)), seed=s))
         enc = VirtualEncoder(Disc(n), faults).run(traj)
-        rows, _ = await run_core(dut, enc, start_clock=totals["segments"] == 0)
+        rows = await run_core(dut, enc, start_clock=totals["segments"] == 0)
         valid, hyb, _pabs, mode = rows.T
         verdict = judge(enc, valid, hyb, mode, core_latency(filter_len), filter_len=filter_len)
-        reader = Reader(Code(n))
-        reader.run(events_from_run(enc, filter_len, RESET))
+        reader = Reader(Code(n), filter_len)
+        reader.run(enc, RESET)
         totals["segments"] += 1
         totals["clocks"] += len(enc)
         totals["strobes"] += reader.strobes

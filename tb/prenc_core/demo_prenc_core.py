@@ -25,7 +25,7 @@ async def demo(dut):
         dut.resolution.value = 1
 
     cocotb.start_soon(switch())
-    rows, _ = await run_core(dut, enc, resolution=0)
+    rows = await run_core(dut, enc, resolution=0)
     valid, hyb, pabs, mode = rows.T
     position = np.where(np.arange(len(valid)) >= RESOLUTION_12_FROM + 1, hyb, pabs)
     np.savez(os.environ["DEMO_OUT"], valid=valid, pos_abs=pabs, pos_hyb=hyb, mode=mode, position=position)

@@ -1,0 +1,355 @@
+// prenc_track_word: one head's code word in the reader's count space.
+//
+// The head's readings at the slot counts base .. base+N-1 form an N-bit word (the
+// lowest count in the MSB, as w(p) on the disc); `index` = count - base is the
+// head's place in it. A count move inside the window moves the index; past an end
+// the window slides and the entering bit is the disc's law applied to the window
+// (forward at the top, inverse at the bottom), so a window that holds the disc's
+// bits keeps holding them.
+//   raw mode  (acquiring): a strobe writes the reading at the index (known); an
+//             illegal quadrature transition makes every bit unknown (the window keeps
+//             its place). Evidence is counted in distinct slots: ext_lo / ext_hi are
+//             the slots just below / above the window whose last reading equals the
+//             law's extension of the window (a slide over a known bit keeps it there,
+//             a slide back takes it as known, a reading that changes the word empties
+//             both), so a re-read after a reversal adds nothing. `span` = ext_lo +
+//             ext_hi (saturating at EXT_MAX) of a full raw window. The health score
+//             also counts raw disagreements (a reading that changes a window full
+//             since the last flush); `settled` (score 0) lets the head take part in a
+//             lock. The score survives flushes: it is the head's record.
+//   law mode  (locked): a strobe only compares the reading with the bit at the
+//             index (mismatch) and with the bits one slot either side (mismatch_lo,
+//             mismatch_hi: the other count hypothesis after a missed state). A
+//             health score rises by SCORE_UP on a mismatch and falls by one on a
+//             match; at SCORE_LIMIT the track stops supporting the position and goes
+//             back to raw mode, to be read anew. While the judge holds two hypotheses
+//             (dual), a reading where they predict different bits leaves the score.
+// `addr` is the word after this clock, for the converter (a registered ROM read),
+// so the converted slot arrives with `word`. base = count - index + HEAD_OFFSET
+// makes `converted slot - base` the offset for either head.
+// Model: prenc.track_word.TrackWord.
+//
+// Parameters
+//   N            code word length, 2..24
+//   TAPS         feedback set as a mask, bit t-1 per tap t (default disc: 32'h204)
+//   HEAD_OFFSET  0 for head 1 (reads s(p)), N-1 for head 2 (reads s(p+N-1))
+//   SCORE_UP     score added by a mismatch, 1..15
+//   SCORE_LIMIT  score at which the track stops supporting, SCORE_UP..255
+//   ERROR_WIDTH  mismatch counter width, 1..32 (saturates)
+//   EXT_MAX      span saturation, 1..63 (the deepest lock's need)
+//   QUIET        agreeing checks after which a head is quiet, 1..63 (default 4N)
+//
+// Ports
+//   strobe, head             a mid-slot strobe and this head's reading
+//   up, down, illegal        the count moved (an illegal step may come with a move)
+//   slot                     the count after this clock's move
+//   flush, law_on            from the judge: empty to raw mode / turn to law mode
+//   realign_up, realign_down from the judge: move the index one slot, on the next
+//                            clock without an event (the other hypothesis won)
+//   dual, dual_cw            from the judge: two hypotheses open, the count's way
+//   span, settled, quiet     lock evidence of a raw window and of its head (from registers):
+//                            quiet = no disagreement in the last QUIET checks, or since reset
+//   word, full, base, law, supported, strobe_q, checked, mismatch*, errors: registered
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_track_word #(
+  parameter integer N           = 10,
+  parameter [31:0]  TAPS        = 32'h0000_0204,
+  parameter integer HEAD_OFFSET = 0,
+  parameter integer SCORE_UP    = 4,
+  parameter integer SCORE_LIMIT = 12,
+  parameter integer ERROR_WIDTH = 16,
+  parameter integer EXT_MAX     = N + 1,
+  parameter integer QUIET       = (4 * N > 63) ? 63 : 4 * N
+) (
+  input  wire                   clk,
+  input  wire                   rst,
+  input  wire                   strobe,
+  input  wire                   head,
+  input  wire                   up,
+  input  wire                   down,
+  input  wire                   illegal,
+  input  wire [N-1:0]           slot,
+  input  wire                   flush,
+  input  wire                   law_on,
+  input  wire                   realign_up,
+  input  wire                   realign_down,
+  input  wire                   dual,
+  input  wire                   dual_cw,
+  input  wire                   clear_errors,
+  output wire [N-1:0]           addr,
+  output wire [N-1:0]           word,
+  output wire                   full,
+  output wire [N-1:0]           base,
+  output wire                   law,
+  output wire                   supported,
+  output wire                   strobe_q,
+  output wire                   checked,
+  output wire                   mismatch,
+  output wire                   mismatch_lo,
+  output wire                   mismatch_hi,
+  output wire [ERROR_WIDTH-1:0] errors,
+  output wire [5:0]             span,
+  output wire                   settled,
+  output wire                   quiet
+);
+
+  generate
+    if (N < 2 || N > 24) begin : g_bad_n
+      initial $display("ERROR: %m: parameter N = %0d is out of range 2..24", N);
+      prenc_track_word_parameter_N_out_of_range_2_to_24 u_stop ();
+    end else if (TAPS[N-1] != 1'b1 || (TAPS >> N) != 32'd0 || TAPS[N-2:0] == 0) begin : g_bad_taps
+      initial $display("ERROR: %m: parameter TAPS = 'h%0h is not a feedback set for N = %0d",
+                       TAPS, N);
+      prenc_track_word_parameter_TAPS_not_a_feedback_set_for_N u_stop ();
+    end
+    if (HEAD_OFFSET != 0 && HEAD_OFFSET != N - 1) begin : g_bad_head_offset
+      initial $display("ERROR: %m: parameter HEAD_OFFSET = %0d must be 0 or N-1", HEAD_OFFSET);
+      prenc_track_word_parameter_HEAD_OFFSET_must_be_0_or_N_minus_1 u_stop ();
+    end
+    if (SCORE_UP < 1 || SCORE_UP > 15 || SCORE_LIMIT < SCORE_UP ||
+        SCORE_LIMIT > 255) begin : g_bad_score
+      initial $display({"ERROR: %m: parameters SCORE_UP = %0d, SCORE_LIMIT = %0d: ",
+                        "need 1 <= UP <= 15, UP <= LIMIT <= 255"},
+                       SCORE_UP, SCORE_LIMIT);
+      prenc_track_word_parameter_SCORE_UP_or_SCORE_LIMIT_out_of_range u_stop ();
+    end
+    if (QUIET < 1 || QUIET > 63) begin : g_bad_quiet
+      initial $display("ERROR: %m: parameter QUIET = %0d is out of range 1..63", QUIET);
+      prenc_track_word_parameter_QUIET_out_of_range_1_to_63 u_stop ();
+    end
+    if (EXT_MAX < 1 || EXT_MAX > 63) begin : g_bad_ext_max
+      initial $display("ERROR: %m: parameter EXT_MAX = %0d is out of range 1..63", EXT_MAX);
+      prenc_track_word_parameter_EXT_MAX_out_of_range_1_to_63 u_stop ();
+    end
+    if (ERROR_WIDTH < 1 || ERROR_WIDTH > 32) begin : g_bad_error_width
+      initial $display("ERROR: %m: parameter ERROR_WIDTH = %0d is out of range 1..32", ERROR_WIDTH);
+      prenc_track_word_parameter_ERROR_WIDTH_out_of_range_1_to_32 u_stop ();
+    end
+  endgenerate
+
+  localparam integer IW = (N <= 2) ? 1 : $clog2(N);
+  localparam integer SW = $clog2(SCORE_LIMIT + 1);
+  localparam [31:0]  LAST32  = N - 1;
+  localparam [IW-1:0] LAST   = LAST32[IW-1:0];
+  localparam [31:0]  HO32    = HEAD_OFFSET;
+  localparam [31:0]  UP32    = SCORE_UP;
+  localparam [31:0]  LIMIT32 = SCORE_LIMIT;
+  localparam [SW-1:0] S_UP    = UP32[SW-1:0];
+  localparam [SW-1:0] S_LIMIT = LIMIT32[SW-1:0];
+  localparam [31:0]  EXT32   = EXT_MAX;
+  localparam [5:0]   E_MAX   = EXT32[5:0];
+  localparam [31:0]  QUIET32 = QUIET;
+  localparam [5:0]   Q_MAX   = QUIET32[5:0];
+
+  reg [N-1:0]           word_reg;
+  reg [N-1:0]           known_reg;
+  reg [IW-1:0]          index_reg;
+  reg                   law_reg;
+  reg [N-1:0]           base_reg;
+  reg                   strobe_reg;
+  reg                   checked_reg;
+  reg                   mismatch_reg;
+  reg                   mismatch_lo_reg;
+  reg                   mismatch_hi_reg;
+  reg [SW-1:0]          score_reg;
+  reg [1:0]             pending_reg;  // {up, down}
+  reg [ERROR_WIDTH-1:0] errors_reg;
+  reg [5:0]             ext_lo_reg;
+  reg [5:0]             ext_hi_reg;
+  reg                   primed_reg;  // full since the last flush: every bit read or predicted
+  reg [5:0]             quiet_reg;   // agreeing checks since the head's last disagreement
+
+  // The disc's laws on the window (datasheet; the bracket is the de Bruijn term).
+  wire [N-1:0] taps = TAPS[N-1:0];
+  wire fwd_bit = (^(word_reg & taps)) ^ (word_reg[N-2:0] == {(N - 1){1'b0}});
+  wire inv_bit = word_reg[0] ^ (^(word_reg[N-1:1] & taps[N-2:0])) ^
+                 (word_reg[N-1:1] == {(N - 1){1'b0}});
+
+  // Index i is word bit N-1-i: the window in count order.
+  wire [N-1:0] in_order;
+  genvar g;
+  generate
+    for (g = 0; g < N; g = g + 1) begin : g_order
+      assign in_order[g] = word_reg[N-1-g];
+    end
+  endgenerate
+  wire bit_here = in_order[index_reg];
+  wire bit_lo   = (index_reg == {IW{1'b0}}) ? inv_bit : in_order[index_reg - 1'b1];
+  wire bit_hi   = (index_reg == LAST) ? fwd_bit : in_order[index_reg + 1'b1];
+
+  // A pending realignment takes the first clock without an event.
+  wire [1:0] pending = pending_reg | {realign_up, realign_down};
+  wire       idle    = ~(up | down | strobe);
+  wire       ev_up   = up | (idle & pending[1]);
+  wire       ev_down = down | (idle & pending[0]);
+
+  // Health, from last clock's comparison.
+  wire [SW:0] score_plus = {1'b0, score_reg} + {1'b0, S_UP};
+  reg  [SW-1:0] score_next;
+  reg  [5:0]    quiet_law;
+  wire alt_reg = dual_cw ? mismatch_lo_reg : mismatch_hi_reg;
+  wire [5:0] quiet_up = (quiet_reg == Q_MAX) ? Q_MAX : quiet_reg + 1'b1;
+  always @* begin
+    score_next = score_reg;
+    quiet_law  = quiet_reg;
+    if (checked_reg && !(dual && (mismatch_reg != alt_reg))) begin
+      quiet_law = mismatch_reg ? 6'd0 : quiet_up;
+      if (mismatch_reg) begin
+        score_next = (score_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_plus[SW-1:0];
+      end else if (score_reg != {SW{1'b0}}) begin
+        score_next = score_reg - 1'b1;
+      end
+    end
+  end
+  wire demote = law_reg & (score_next >= S_LIMIT);
+
+  wire [SW:0] score_mid_plus = {1'b0, score_next} + {1'b0, S_UP};
+  wire        changed        = head ^ bit_here;
+
+  reg [N-1:0]  word_next;
+  reg [N-1:0]  known_next;
+  reg [IW-1:0] index_next;
+  reg          law_next;
+  reg [SW-1:0] score_after;
+  reg [1:0]    pending_next;
+  reg [5:0]    ext_lo_next;
+  reg [5:0]    ext_hi_next;
+  reg          primed_next;
+  reg [5:0]    quiet_next;
+  always @* begin
+    word_next    = word_reg;
+    known_next   = known_reg;
+    index_next   = index_reg;
+    law_next     = law_reg;
+    score_after  = score_next;
+    pending_next = idle ? 2'b00 : pending;
+    ext_lo_next  = ext_lo_reg;
+    ext_hi_next  = ext_hi_reg;
+    quiet_next   = quiet_law;
+    if (ev_up) begin
+      if (index_reg == LAST) begin
+        word_next   = {word_reg[N-2:0], fwd_bit};
+        known_next  = {known_reg[N-2:0], ext_hi_reg != 6'd0};
+        ext_lo_next = !known_reg[N-1] ? 6'd0 : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_reg + 1'b1;
+        ext_hi_next = (ext_hi_reg == 6'd0) ? 6'd0 : ext_hi_reg - 1'b1;
+      end else begin
+        index_next = index_reg + 1'b1;
+      end
+    end else if (ev_down) begin
+      if (index_reg == {IW{1'b0}}) begin
+        word_next   = {inv_bit, word_reg[N-1:1]};
+        known_next  = {ext_lo_reg != 6'd0, known_reg[N-1:1]};
+        ext_hi_next = !known_reg[0] ? 6'd0 : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_reg + 1'b1;
+        ext_lo_next = (ext_lo_reg == 6'd0) ? 6'd0 : ext_lo_reg - 1'b1;
+      end else begin
+        index_next = index_reg - 1'b1;
+      end
+    end else if (strobe && !law_reg) begin
+      word_next[LAST - index_reg]  = head;
+      known_next[LAST - index_reg] = 1'b1;
+      if (changed) begin
+        ext_lo_next = 6'd0;
+        ext_hi_next = 6'd0;
+      end
+      if (primed_reg) begin
+        quiet_next = changed ? 6'd0 : (quiet_law == Q_MAX) ? Q_MAX : quiet_law + 1'b1;
+        if (changed) begin
+          score_after = (score_mid_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_mid_plus[SW-1:0];
+        end else if (score_next != {SW{1'b0}}) begin
+          score_after = score_next - 1'b1;
+        end
+      end
+    end
+    if (law_reg) begin
+      ext_lo_next = 6'd0;
+      ext_hi_next = 6'd0;
+    end
+    primed_next = primed_reg | (&known_next);
+    if (illegal && !law_reg) begin
+      // The readings are in doubt (the count may be a slot off), not the window's place.
+      known_next  = {N{1'b0}};
+      ext_lo_next = 6'd0;
+      ext_hi_next = 6'd0;
+      primed_next = 1'b0;
+    end
+    if (law_on) begin
+      law_next    = 1'b1;
+      score_after = {SW{1'b0}};
+    end
+    if (flush || demote) begin  // the score stays: it is the head's record
+      known_next   = {N{1'b0}};
+      index_next   = {IW{1'b0}};
+      law_next     = 1'b0;
+      pending_next = 2'b00;
+      ext_lo_next  = 6'd0;
+      ext_hi_next  = 6'd0;
+      primed_next  = 1'b0;
+    end
+  end
+
+  always @(posedge clk) begin
+    word_reg        <= word_next;
+    known_reg       <= known_next;
+    index_reg       <= index_next;
+    law_reg         <= law_next;
+    score_reg       <= score_after;
+    pending_reg     <= pending_next;
+    ext_lo_reg      <= ext_lo_next;
+    ext_hi_reg      <= ext_hi_next;
+    primed_reg      <= primed_next;
+    quiet_reg       <= quiet_next;
+    base_reg        <= slot - {{(N - IW){1'b0}}, index_next} + HO32[N-1:0];
+    strobe_reg      <= strobe;
+    checked_reg     <= strobe & law_reg;
+    mismatch_reg    <= strobe & law_reg & (head ^ bit_here);
+    mismatch_lo_reg <= strobe & law_reg & (head ^ bit_lo);
+    mismatch_hi_reg <= strobe & law_reg & (head ^ bit_hi);
+    if (checked_reg && mismatch_reg && errors_reg != {ERROR_WIDTH{1'b1}}) begin
+      errors_reg <= errors_reg + 1'b1;
+    end
+    if (clear_errors) begin
+      errors_reg <= {ERROR_WIDTH{1'b0}};
+    end
+    if (rst) begin
+      known_reg       <= {N{1'b0}};
+      index_reg       <= {IW{1'b0}};
+      law_reg         <= 1'b0;
+      score_reg       <= {SW{1'b0}};
+      pending_reg     <= 2'b00;
+      ext_lo_reg      <= 6'd0;
+      ext_hi_reg      <= 6'd0;
+      primed_reg      <= 1'b0;
+      quiet_reg       <= Q_MAX;
+      strobe_reg      <= 1'b0;
+      checked_reg     <= 1'b0;
+      mismatch_reg    <= 1'b0;
+      mismatch_lo_reg <= 1'b0;
+      mismatch_hi_reg <= 1'b0;
+      errors_reg      <= {ERROR_WIDTH{1'b0}};
+    end
+  end
+
+  assign addr        = word_next;
+  assign word        = word_reg;
+  assign full        = &known_reg;
+  assign base        = base_reg;
+  assign law         = law_reg;
+  assign supported   = law_reg & (score_reg < S_LIMIT);
+  assign strobe_q    = strobe_reg;
+  assign checked     = checked_reg;
+  assign mismatch    = mismatch_reg;
+  assign mismatch_lo = mismatch_lo_reg;
+  assign mismatch_hi = mismatch_hi_reg;
+  assign errors      = errors_reg;
+  wire [6:0] ext_sum  = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
+  assign span        = (~&known_reg | law_reg) ? 6'd0 :
+                       (ext_sum > {1'b0, E_MAX}) ? E_MAX : ext_sum[5:0];
+  assign settled     = (score_reg == {SW{1'b0}});
+  assign quiet       = (quiet_reg == Q_MAX);
+
+endmodule
+
+`resetall
