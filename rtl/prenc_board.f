@@ -5,6 +5,7 @@ prenc_sampler.v
 prenc_converter.v
 prenc_rom_check.v
 prenc_position.v
+prenc_disc_law.v
 prenc_track_word.v
 prenc_mode_fsm.v
 prenc_core.v

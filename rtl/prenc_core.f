@@ -3,6 +3,7 @@ prenc_input_conditioner.v
 prenc_quadrature.v
 prenc_sampler.v
 prenc_position.v
+prenc_disc_law.v
 prenc_track_word.v
 prenc_converter.v
 prenc_rom_check.v

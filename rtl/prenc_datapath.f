@@ -3,5 +3,6 @@ prenc_input_conditioner.v
 prenc_quadrature.v
 prenc_sampler.v
 prenc_shift_register.v
+prenc_disc_law.v
 prenc_predictor.v
 prenc_datapath.v

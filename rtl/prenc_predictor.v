@@ -69,10 +69,17 @@ module prenc_predictor #(
     end
   endgenerate
 
-  wire [N-1:0] taps = TAPS[N-1:0];
+  wire forward_bit;
+  wire inverse_bit;
 
-  wire forward_bit = (^(word & taps)) ^ (word[N-2:0] == {(N - 1){1'b0}});
-  wire inverse_bit = word[0] ^ (^(word[N-1:1] & taps[N-2:0])) ^ (word[N-1:1] == {(N - 1){1'b0}});
+  prenc_disc_law #(
+    .N    (N),
+    .TAPS (TAPS)
+  ) u_law (
+    .word        (word),
+    .forward_bit (forward_bit),
+    .inverse_bit (inverse_bit)
+  );
 
   reg expect1_next;
   reg expect2_next;

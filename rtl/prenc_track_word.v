@@ -163,10 +163,17 @@ module prenc_track_word #(
   reg [5:0]             quiet_reg;   // agreeing checks since the head's last disagreement
 
   // The disc's laws on the window (datasheet; the bracket is the de Bruijn term).
-  wire [N-1:0] taps = TAPS[N-1:0];
-  wire fwd_bit = (^(word_reg & taps)) ^ (word_reg[N-2:0] == {(N - 1){1'b0}});
-  wire inv_bit = word_reg[0] ^ (^(word_reg[N-1:1] & taps[N-2:0])) ^
-                 (word_reg[N-1:1] == {(N - 1){1'b0}});
+  wire fwd_bit;
+  wire inv_bit;
+
+  prenc_disc_law #(
+    .N    (N),
+    .TAPS (TAPS)
+  ) u_law (
+    .word        (word_reg),
+    .forward_bit (fwd_bit),
+    .inverse_bit (inv_bit)
+  );
 
   // Index i is word bit N-1-i: the window in count order.
   wire [N-1:0] in_order;

@@ -5,6 +5,7 @@
 ../../rtl/prenc_converter.v
 ../../rtl/prenc_rom_check.v
 ../../rtl/prenc_position.v
+../../rtl/prenc_disc_law.v
 ../../rtl/prenc_track_word.v
 ../../rtl/prenc_mode_fsm.v
 ../../rtl/prenc_core.v

@@ -1,0 +1,2 @@
+// Sources of prenc_disc_law, relative to this folder.
+prenc_disc_law.v
