@@ -152,7 +152,9 @@ module prenc_core #(
   wire strobe_head1;
   wire strobe_head2;
 
-  prenc_sampler u_sampler (
+  prenc_sampler #(
+    .JUMP (1)
+  ) u_sampler (
     .clk          (clk),
     .rst          (rst),
     .head1_in     (clean[0]),
@@ -344,17 +346,8 @@ module prenc_core #(
   reg         illegal_j_reg;
   reg         illegal_cw_j_reg;
   reg [N-1:0] slot_j_reg;
-  reg [1:0]   full_j_reg;
   reg [N-1:0] off1_j_reg;
   reg [N-1:0] off2_j_reg;
-  reg [5:0]   span1_j_reg;
-  reg [5:0]   span2_j_reg;
-  reg [1:0]   settled_j_reg;
-  reg [1:0]   quiet_j_reg;
-  reg [1:0]   checked_j_reg;
-  reg [1:0]   mismatch_j_reg;
-  reg [1:0]   mismatch_lo_j_reg;
-  reg [1:0]   mismatch_hi_j_reg;
 
   always @(posedge clk) begin
     illegal_t_reg     <= ev_illegal;
@@ -364,17 +357,8 @@ module prenc_core #(
     illegal_j_reg     <= illegal_t_reg;
     illegal_cw_j_reg  <= illegal_cw_t_reg;
     slot_j_reg        <= slot_t_reg;
-    full_j_reg        <= full;
     off1_j_reg        <= conv1 - base1;
     off2_j_reg        <= conv2 - base2;
-    span1_j_reg       <= span1;
-    span2_j_reg       <= span2;
-    settled_j_reg     <= settled;
-    quiet_j_reg       <= quiet;
-    checked_j_reg     <= checked;
-    mismatch_j_reg    <= mismatch;
-    mismatch_lo_j_reg <= mismatch_lo;
-    mismatch_hi_j_reg <= mismatch_hi;
     if (rst) begin
       illegal_t_reg     <= 1'b0;
       slot_t_reg        <= {N{1'b0}};
@@ -382,17 +366,8 @@ module prenc_core #(
       illegal_j_reg     <= 1'b0;
       illegal_cw_j_reg  <= 1'b0;
       slot_j_reg        <= {N{1'b0}};
-      full_j_reg        <= 2'b00;
       off1_j_reg        <= {N{1'b0}};
       off2_j_reg        <= {N{1'b0}};
-      span1_j_reg       <= 6'd0;
-      span2_j_reg       <= 6'd0;
-      settled_j_reg     <= 2'b00;
-      quiet_j_reg       <= 2'b00;
-      checked_j_reg     <= 2'b00;
-      mismatch_j_reg    <= 2'b00;
-      mismatch_lo_j_reg <= 2'b00;
-      mismatch_hi_j_reg <= 2'b00;
     end
   end
 
@@ -413,17 +388,19 @@ module prenc_core #(
     .illegal      (illegal_j_reg),
     .illegal_cw   (illegal_cw_j_reg),
     .slot         (slot_j_reg),
-    .full         (full_j_reg),
+    .slot_ahead   (slot_t_reg[1:0]),
+    .slot_ahead2  (slot),
+    .full_ahead   (full),
     .off1         (off1_j_reg),
     .off2         (off2_j_reg),
-    .span1        (span1_j_reg),
-    .span2        (span2_j_reg),
-    .settled      (settled_j_reg),
-    .quiet        (quiet_j_reg),
-    .checked      (checked_j_reg),
-    .mismatch     (mismatch_j_reg),
-    .mismatch_lo  (mismatch_lo_j_reg),
-    .mismatch_hi  (mismatch_hi_j_reg),
+    .span1_ahead   (span1),
+    .span2_ahead   (span2),
+    .settled_ahead (settled),
+    .quiet_ahead   (quiet),
+    .checked_ahead     (checked),
+    .mismatch_ahead    (mismatch),
+    .mismatch_lo_ahead (mismatch_lo),
+    .mismatch_hi_ahead (mismatch_hi),
     .supported    (supported),
     .law          (law),
     .mode         (mode),

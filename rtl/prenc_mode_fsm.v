@@ -23,6 +23,11 @@
 //     the tracks realign. Votes both ways, a track losing support, a second illegal
 //     transition or DUAL_SPAN slots without a decision: drop. With one track
 //     supporting, an illegal transition drops the offset at once.
+// Timing: what does not depend on this clock's decision is registered a clock ahead
+// from the `*_ahead` inputs (the J1 input: the track words' outputs): each track's
+// span against the lock depths, full and settled, the votes, whether the slot is
+// fresh, and the slot relative to the transition (its subtraction two clocks ahead,
+// from slot_ahead2). The decisions equal those on the J1 values (same model).
 // The arithmetic behind LOCK_BOTH / LOCK_ONE: docs/architecture.md.
 // Model: prenc.mode_fsm.ModeFsm (decisions registered; flush, law_on and realign are
 // one-clock pulses to the track words).
@@ -55,17 +60,21 @@ module prenc_mode_fsm #(
   input  wire         illegal,
   input  wire         illegal_cw,
   input  wire [N-1:0] slot,
-  input  wire [1:0]   full,
+  input  wire [1:0]   slot_ahead,   // the next clock's slot (the J1 input), two LSBs
+  input  wire [N-1:0] slot_ahead2,  // the slot after it (the track words' input)
+  input  wire [1:0]   full_ahead,     // lock evidence of the next event (the J1 input)
   input  wire [N-1:0] off1,
   input  wire [N-1:0] off2,
-  input  wire [5:0]   span1,
-  input  wire [5:0]   span2,
-  input  wire [1:0]   settled,
-  input  wire [1:0]   quiet,
-  input  wire [1:0]   checked,
-  input  wire [1:0]   mismatch,
-  input  wire [1:0]   mismatch_lo,
-  input  wire [1:0]   mismatch_hi,
+  input  wire [5:0]   span1_ahead,
+  input  wire [5:0]   span2_ahead,
+  input  wire [1:0]   settled_ahead,
+  input  wire [1:0]   quiet_ahead,
+  // the tracks' law-mode comparisons of the next event (the J1 input): the judge
+  // registers its votes from them, one clock ahead
+  input  wire [1:0]   checked_ahead,
+  input  wire [1:0]   mismatch_ahead,
+  input  wire [1:0]   mismatch_lo_ahead,
+  input  wire [1:0]   mismatch_hi_ahead,
   // the tracks now
   input  wire [1:0]   supported,
   input  wire [1:0]   law,
@@ -115,7 +124,6 @@ module prenc_mode_fsm #(
   localparam [2:0] INCREMENTAL = 3'd4;
   localparam [31:0] NEED_BOTH32 = LOCK_BOTH - 1;
   localparam [31:0] NEED_ONE32  = LOCK_ONE - 1;
-  localparam [31:0] VOTES32     = DUAL_VOTES;
   localparam [31:0] SPAN32      = DUAL_SPAN;
   localparam [31:0] DEEP_BOTH32 = LOCK_BOTH - 1 + LOCK_EXTRA;
   localparam [31:0] DEEP_ONE32  = LOCK_ONE - 1 + LOCK_EXTRA;
@@ -123,7 +131,6 @@ module prenc_mode_fsm #(
   localparam [5:0]  NEED_ONE    = NEED_ONE32[5:0];
   localparam [5:0]  DEEP_BOTH   = DEEP_BOTH32[5:0];
   localparam [5:0]  DEEP_ONE    = DEEP_ONE32[5:0];
-  localparam [2:0]  VOTES       = VOTES32[2:0];
   // Slots relative to the transition, signed, wide enough for +-(DUAL_SPAN + 1).
   localparam integer RW = 7;
   localparam signed [RW-1:0] SPAN_P = SPAN32[RW-1:0];
@@ -136,8 +143,8 @@ module prenc_mode_fsm #(
   reg [N-1:0]        anchor_reg;
   reg signed [RW-1:0] lo_reg;
   reg signed [RW-1:0] hi_reg;
-  reg [2:0]          votes_keep_reg;
-  reg [2:0]          votes_other_reg;
+  reg [DUAL_VOTES-1:0] votes_keep_reg;   // votes as a thermometer code: bit k = more than k
+  reg [DUAL_VOTES-1:0] votes_other_reg;
   reg [3:0]          voted_reg;     // {other by 2, other by 1, keep by 2, keep by 1}
   reg [1:0]          flush_reg;
   reg [1:0]          law_on_reg;
@@ -149,42 +156,115 @@ module prenc_mode_fsm #(
   wire [1:0] sup    = (supported & ~flush_reg) | law_on_reg;
   wire [1:0] lawish = (law & ~flush_reg) | law_on_reg;
   // Lock evidence, in parallel with the state logic.
-  wire [1:0] ready   = full & settled;
+  // The span comparisons are registered one clock ahead, from the J1 input.
+  wire [5:0] need_both = (&quiet_ahead) ? NEED_BOTH : DEEP_BOTH;
+  wire [5:0] need_one1 = quiet_ahead[0] ? NEED_ONE : DEEP_ONE;
+  wire [5:0] need_one2 = quiet_ahead[1] ? NEED_ONE : DEEP_ONE;
+  reg  [1:0] full;
+  reg  [1:0] ready;       // full and settled
+  reg  [1:0] span_both;   // span >= the two-track need
+  reg  [1:0] span_one;    // span >= the one-track need
+  always @(posedge clk) begin
+    full      <= full_ahead;
+    ready     <= full_ahead & settled_ahead;
+    span_both <= {span2_ahead >= need_both, span1_ahead >= need_both};
+    span_one  <= {span2_ahead >= need_one2, span1_ahead >= need_one1};
+    if (rst) begin
+      full      <= 2'b00;
+      ready     <= 2'b00;
+      span_both <= 2'b00;
+      span_one  <= 2'b00;
+    end
+  end
   wire       agree12 = (off1 == off2);
-  wire [5:0] need_both = (&quiet) ? NEED_BOTH : DEEP_BOTH;
-  wire [5:0] need_one1 = quiet[0] ? NEED_ONE : DEEP_ONE;
-  wire [5:0] need_one2 = quiet[1] ? NEED_ONE : DEEP_ONE;
-  wire       both_ok = ready[0] & ready[1] & agree12 & (span1 >= need_both) & (span2 >= need_both);
+  wire       both_ok = ready[0] & ready[1] & agree12 & span_both[0] & span_both[1];
   // One head alone, unless the other is settled on another offset.
-  wire       one1_ok = ready[0] & (span1 >= need_one1) & ~(ready[1] & ~agree12);
-  wire       one2_ok = ready[1] & (span2 >= need_one2) & ~(ready[0] & ~agree12);
+  wire       one1_ok = ready[0] & span_one[0] & ~(ready[1] & ~agree12);
+  wire       one2_ok = ready[1] & span_one[1] & ~(ready[0] & ~agree12);
   wire       on1     = (off1 == offset_reg);
   wire       on2     = (off2 == offset_reg);
-  // Dual: where this strobe is, relative to the transition.
-  wire [N-1:0] rel_n = slot - anchor_reg;
-  wire signed [RW-1:0] rel;
-  wire         far;
+  // Dual: where this strobe is, relative to the transition. The subtraction runs two
+  // clocks ahead, on the slot entering the track words (slot_ahead2) and the anchor as
+  // this clock leaves it, and is registered: rel_d = slot_ahead - anchor_reg, from a
+  // register. In dual it is the next event's place; otherwise a transition judged now
+  // anchors the next event, which is then at most one slot away (the count moves one
+  // slot per clock at most): the step between the two slots (rel_step).
+  wire [N-1:0] anchor_next_w = dual_reg ? anchor_reg : slot;
+  wire [N-1:0] rel_n = slot_ahead2 - anchor_next_w;
+  wire signed [RW-1:0] rel_n_w;
+  wire         far_n;
   generate
     if (N > RW) begin : g_rel_wide
       wire [N-RW:0] top = rel_n[N-1:RW-1];
       wire signed [RW-1:0] rel_w = rel_n[RW-1:0];
-      assign far = ~((&top) | ~(|top)) | (rel_w > SPAN_P) | (rel_w < SPAN_M);
-      assign rel = rel_n[RW-1:0];
+      assign far_n   = ~((&top) | ~(|top)) | (rel_w > SPAN_P) | (rel_w < SPAN_M);
+      assign rel_n_w = rel_n[RW-1:0];
     end else begin : g_rel_narrow
       wire signed [RW-1:0] rel_x = {{(RW - N){rel_n[N-1]}}, rel_n};
-      assign far = (rel_x > SPAN_P) | (rel_x < SPAN_M);
-      assign rel = rel_x;
+      assign far_n   = (rel_x > SPAN_P) | (rel_x < SPAN_M);
+      assign rel_n_w = rel_x;
     end
   endgenerate
-  wire       fresh = (rel < lo_reg) | (rel > hi_reg);
-  wire [1:0] alt   = dual_cw_reg ? mismatch_lo : mismatch_hi;
-  wire [1:0] vote  = checked & (mismatch ^ alt);
-  wire [1:0] vote_keep  = vote & ~mismatch;
-  wire [1:0] vote_other = vote & mismatch;
-  wire [3:0] keep_sum   = {1'b0, votes_keep_reg} + {3'd0, vote_keep[0]} + {3'd0, vote_keep[1]};
-  wire [3:0] other_sum  = {1'b0, votes_other_reg} + {3'd0, vote_other[0]} + {3'd0, vote_other[1]};
-  wire [2:0] keep_new   = (keep_sum > {1'b0, VOTES}) ? VOTES : keep_sum[2:0];
-  wire [2:0] other_new  = (other_sum > {1'b0, VOTES}) ? VOTES : other_sum[2:0];
+  reg signed [RW-1:0] rel_d;  // slot_ahead - anchor_reg
+  reg                 far_d;
+  always @(posedge clk) begin
+    rel_d <= rel_n_w;
+    far_d <= far_n;
+    if (rst) begin
+      rel_d <= {RW{1'b0}};
+      far_d <= 1'b0;
+    end
+  end
+  wire [1:0] step2 = slot_ahead - slot[1:0];  // 0, 1 or 3 (-1)
+  wire signed [RW-1:0] rel_step = (step2 == 2'd1) ? 1 : (step2 == 2'd3) ? -1 : 0;
+  wire signed [RW-1:0] rel_ahead = dual_reg ? rel_d : rel_step;
+  wire                 far_ahead = dual_reg & far_d;  // DUAL_SPAN >= 1
+  reg signed [RW-1:0] rel;
+  reg                 far;
+  always @(posedge clk) begin
+    rel <= rel_ahead;
+    far <= far_ahead;
+    if (rst) begin
+      rel <= {RW{1'b0}};
+      far <= 1'b0;
+    end
+  end
+  // Fresh (outside the slots visited since the transition), also one clock ahead:
+  // against the interval as this clock's event leaves it.
+  wire enter  = illegal & valid_now & ~dual_reg & (sup == 2'b11);
+  wire widen  = ~illegal & strobe & dual_reg & ~far & fresh;
+  wire below  = (rel_d < lo_reg) & ~(widen & (rel_d >= rel));  // used in dual only
+  wire above  = (rel_d > hi_reg) & ~(widen & (rel_d <= rel));
+  reg  fresh;
+  always @(posedge clk) begin
+    fresh <= ~dual_reg | below | above;
+    if (rst) begin
+      fresh <= 1'b0;
+    end
+  end
+  // Votes, registered one clock ahead: a reading where the two hypotheses predict
+  // different bits votes for the one it matches. The way of a transition judged now
+  // is forwarded.
+  wire       dual_cw_ahead = dual_reg ? dual_cw_reg : illegal_cw;
+  wire [1:0] alt_ahead     = dual_cw_ahead ? mismatch_lo_ahead : mismatch_hi_ahead;
+  wire [1:0] vote_ahead    = checked_ahead & (mismatch_ahead ^ alt_ahead);
+  reg  [1:0] vote_keep;
+  reg  [1:0] vote_other;
+  always @(posedge clk) begin
+    vote_keep  <= vote_ahead & ~mismatch_ahead;
+    vote_other <= vote_ahead & mismatch_ahead;
+    if (rst) begin
+      vote_keep  <= 2'b00;
+      vote_other <= 2'b00;
+    end
+  end
+  // Adding one or two votes shifts ones into the thermometer (saturating at DUAL_VOTES).
+  wire [DUAL_VOTES:0]   keep_ext  = {votes_keep_reg[DUAL_VOTES-2:0], 2'b11};
+  wire [DUAL_VOTES:0]   other_ext = {votes_other_reg[DUAL_VOTES-2:0], 2'b11};
+  wire [DUAL_VOTES-1:0] keep_new  = (&vote_keep) ? keep_ext[DUAL_VOTES-1:0] :
+                                    (|vote_keep) ? keep_ext[DUAL_VOTES:1] : votes_keep_reg;
+  wire [DUAL_VOTES-1:0] other_new = (&vote_other) ? other_ext[DUAL_VOTES-1:0] :
+                                    (|vote_other) ? other_ext[DUAL_VOTES:1] : votes_other_reg;
   wire [3:0] voted_new  = voted_reg | {vote_other, vote_keep};
 
   reg [2:0]           mode_next;
@@ -194,8 +274,8 @@ module prenc_mode_fsm #(
   reg [N-1:0]         anchor_next;
   reg signed [RW-1:0] lo_next;
   reg signed [RW-1:0] hi_next;
-  reg [2:0]           votes_keep_next;
-  reg [2:0]           votes_other_next;
+  reg [DUAL_VOTES-1:0] votes_keep_next;
+  reg [DUAL_VOTES-1:0] votes_other_next;
   reg [3:0]           voted_next;
   reg [1:0]           flush_next;
   reg [1:0]           law_on_next;
@@ -208,29 +288,24 @@ module prenc_mode_fsm #(
     mode_next        = mode_reg;
     offset_next      = offset_reg;
     dual_next        = dual_reg;
-    dual_cw_next     = dual_cw_reg;
-    anchor_next      = anchor_reg;
-    lo_next          = lo_reg;
-    hi_next          = hi_reg;
-    votes_keep_next  = votes_keep_reg;
-    votes_other_next = votes_other_reg;
-    voted_next       = voted_reg;
+    // Outside dual the hypothesis state is held at its starting values (the event's
+    // way and slot, nothing visited, no votes), ready for a transition judged now.
+    dual_cw_next     = dual_reg ? dual_cw_reg : illegal_cw;
+    anchor_next      = dual_reg ? anchor_reg : slot;
+    lo_next          = dual_reg ? lo_reg : 1;
+    hi_next          = dual_reg ? hi_reg : 0;
+    votes_keep_next  = dual_reg ? votes_keep_reg : {DUAL_VOTES{1'b0}};
+    votes_other_next = dual_reg ? votes_other_reg : {DUAL_VOTES{1'b0}};
+    voted_next       = dual_reg ? voted_reg : 4'd0;
     flush_next       = 2'b00;
     law_on_next      = 2'b00;
     realign_next     = 2'b00;
     locked_now       = 1'b0;
     drop             = 1'b0;
     if (illegal) begin
-      if (valid_now && !dual_reg && sup == 2'b11) begin
+      if (enter) begin
         dual_next        = 1'b1;
-        dual_cw_next     = illegal_cw;
         mode_next        = INCREMENTAL;
-        anchor_next      = slot;
-        lo_next          = 1;
-        hi_next          = 0;
-        votes_keep_next  = 3'd0;
-        votes_other_next = 3'd0;
-        voted_next       = 4'd0;
       end else if (locked) begin
         drop = 1'b1;
       end
@@ -262,12 +337,12 @@ module prenc_mode_fsm #(
         votes_keep_next  = keep_new;
         votes_other_next = other_new;
         voted_next       = voted_new;
-        if (keep_new != 3'd0 && other_new != 3'd0) begin
+        if (keep_new[0] && other_new[0]) begin
           drop = 1'b1;
-        end else if (keep_new >= VOTES && voted_new[0] && voted_new[1]) begin
+        end else if (keep_new[DUAL_VOTES-1] && voted_new[0] && voted_new[1]) begin
           dual_next = 1'b0;
           mode_next = NORMAL;
-        end else if (other_new >= VOTES && voted_new[2] && voted_new[3]) begin
+        end else if (other_new[DUAL_VOTES-1] && voted_new[2] && voted_new[3]) begin
           // The other way: the count is one slot off; the offset takes it.
           dual_next    = 1'b0;
           mode_next    = NORMAL;
@@ -324,8 +399,8 @@ module prenc_mode_fsm #(
       anchor_reg      <= {N{1'b0}};
       lo_reg          <= 1;
       hi_reg          <= 0;
-      votes_keep_reg  <= 3'd0;
-      votes_other_reg <= 3'd0;
+      votes_keep_reg  <= {DUAL_VOTES{1'b0}};
+      votes_other_reg <= {DUAL_VOTES{1'b0}};
       voted_reg       <= 4'd0;
       flush_reg       <= 2'b00;
       law_on_reg      <= 2'b00;

@@ -13,6 +13,17 @@
 // moves the word only when the disc reached a new slot. The first strobe after
 // reset or a break in continuity counts as moved.
 //
+// Landing readings (JUMP = 1, the core): an illegal transition (A and B changed
+// together) lands the disc on a quarter boundary. When the quarter after it is 1 or 2,
+// the landing point is at least a quarter slot from a slot boundary whichever way the
+// disc moved (+2 quarters: p + 0.5 / p + 0.25; -2 quarters: p + 0.75 / p + 0.5), so the
+// heads read whole slots there. The heads at that sample are strobed one clock later,
+// unless a step or another illegal transition comes in between (one event per clock).
+// They are evidence for the reader's two hypotheses, not a mid-slot sample.
+//
+// Parameters
+//   JUMP   1: also strobe the landing reading after an illegal transition; 0: mid-slot only
+//
 // Ports (outputs registered)
 //   head1_in, head2_in   conditioned heads, same latency as the decoder's inputs
 //   step, step_cw        from prenc_quadrature (one clock after the input sample)
@@ -27,7 +38,9 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-module prenc_sampler (
+module prenc_sampler #(
+  parameter integer JUMP = 0
+) (
   input  wire       clk,
   input  wire       rst,
   input  wire       head1_in,
@@ -43,6 +56,13 @@ module prenc_sampler (
   output wire       strobe_head2
 );
 
+  generate
+    if (JUMP != 0 && JUMP != 1) begin : g_bad_jump
+      initial $display("ERROR: %m: parameter JUMP = %0d must be 0 or 1", JUMP);
+      prenc_sampler_parameter_JUMP_must_be_0_or_1 u_stop ();
+    end
+  endgenerate
+
   // Heads delayed one clock, to line up with the decoder's step output.
   reg head1_d;
   reg head2_d;
@@ -54,6 +74,10 @@ module prenc_sampler (
   reg strobe_head2_reg;
   reg have_last_reg;  // a strobe has been seen since reset or the last break
   reg last_cw_reg;    // direction of that strobe
+  reg landing_reg;    // a landing reading waiting for a clock without an event
+  reg landing_cw_reg;
+  reg landing_head1_reg;
+  reg landing_head2_reg;
 
   wire mid_slot = step & (step_cw ? (quarter == 2'd2) : (quarter == 2'd1));
 
@@ -69,13 +93,24 @@ module prenc_sampler (
       strobe_head2_reg <= head2_d;
       have_last_reg    <= 1'b1;
       last_cw_reg      <= step_cw;
+    end else if (landing_reg && !step && !break_in) begin
+      strobe_reg       <= 1'b1;
+      strobe_cw_reg    <= landing_cw_reg;
+      strobe_moved_reg <= 1'b1;
+      strobe_head1_reg <= landing_head1_reg;
+      strobe_head2_reg <= landing_head2_reg;
     end
+    landing_reg       <= (JUMP == 1) & break_in & (quarter[1] ^ quarter[0]);
+    landing_cw_reg    <= step_cw;
+    landing_head1_reg <= head1_d;
+    landing_head2_reg <= head2_d;
     if (break_in) begin
       have_last_reg <= 1'b0;
     end
     if (rst) begin
       strobe_reg    <= 1'b0;
       have_last_reg <= 1'b0;
+      landing_reg   <= 1'b0;
     end
   end
 

@@ -15,7 +15,8 @@
 //             both), so a re-read after a reversal adds nothing. `span` = ext_lo +
 //             ext_hi (saturating at EXT_MAX) of a full raw window. The health score
 //             also counts raw disagreements (a reading that changes a window full
-//             since the last flush); `settled` (score 0) lets the head take part in a
+//             since the last flush), registered and scored on the next clock as the
+//             law-mode comparisons are; `settled` (score 0) lets the head take part in a
 //             lock. The score survives flushes: it is the head's record.
 //   law mode  (locked): a strobe only compares the reading with the bit at the
 //             index (mismatch) and with the bits one slot either side (mismatch_lo,
@@ -44,8 +45,9 @@
 //   up, down, illegal        the count moved (an illegal step may come with a move)
 //   slot                     the count after this clock's move
 //   flush, law_on            from the judge: empty to raw mode / turn to law mode
-//   realign_up, realign_down from the judge: move the index one slot, on the next
-//                            clock without an event (the other hypothesis won)
+//   realign_up, realign_down from the judge: move the index one slot, on the first
+//                            clock without an event after the pulse (the other
+//                            hypothesis won)
 //   dual, dual_cw            from the judge: two hypotheses open, the count's way
 //   span, settled, quiet     lock evidence of a raw window and of its head (from registers):
 //                            quiet = no disagreement in the last QUIET checks, or since reset
@@ -161,18 +163,30 @@ module prenc_track_word #(
   reg [5:0]             ext_hi_reg;
   reg                   primed_reg;  // full since the last flush: every bit read or predicted
   reg [5:0]             quiet_reg;   // agreeing checks since the head's last disagreement
+  reg                   supported_reg;  // law mode and score below the limit
+  reg                   full_reg;       // &known_reg
+  reg                   raw_checked_reg;  // raw mode: a bit read or predicted was read again
+  reg                   raw_changed_reg;  // ... and the reading changed it
 
-  // The disc's laws on the window (datasheet; the bracket is the de Bruijn term).
-  wire fwd_bit;
-  wire inv_bit;
+  // The disc's laws on the window (datasheet; the bracket is the de Bruijn term),
+  // applied to the next word and registered with it, and the window's ends: off the
+  // path from the word to the converter's address.
+  reg  [N-1:0] word_next;
+  reg  [IW-1:0] index_next;
+  wire fwd_next;
+  wire inv_next;
+  reg  fwd_bit;
+  reg  inv_bit;
+  reg  at_top;     // index_reg == N - 1
+  reg  at_bottom;  // index_reg == 0
 
   prenc_disc_law #(
     .N    (N),
     .TAPS (TAPS)
   ) u_law (
-    .word        (word_reg),
-    .forward_bit (fwd_bit),
-    .inverse_bit (inv_bit)
+    .word        (word_next),
+    .forward_bit (fwd_next),
+    .inverse_bit (inv_next)
   );
 
   // Index i is word bit N-1-i: the window in count order.
@@ -184,16 +198,38 @@ module prenc_track_word #(
     end
   endgenerate
   wire bit_here = in_order[index_reg];
-  wire bit_lo   = (index_reg == {IW{1'b0}}) ? inv_bit : in_order[index_reg - 1'b1];
-  wire bit_hi   = (index_reg == LAST) ? fwd_bit : in_order[index_reg + 1'b1];
+  // Word bit N-1-index one-hot: the bit a raw strobe writes (compares with constants).
+  wire [N-1:0] at_index;
+  generate
+    for (g = 0; g < N; g = g + 1) begin : g_at_index
+      localparam [31:0] AT32 = N - 1 - g;
+      assign at_index[g] = (index_reg == AT32[IW-1:0]);
+    end
+  endgenerate
+  wire bit_lo   = at_bottom ? inv_bit : in_order[index_reg - 1'b1];
+  wire bit_hi   = at_top ? fwd_bit : in_order[index_reg + 1'b1];
 
-  // A pending realignment takes the first clock without an event.
-  wire [1:0] pending = pending_reg | {realign_up, realign_down};
+  // A realignment waits in pending_reg and takes the first clock without an event
+  // after the judge's pulse.
+  wire [1:0] pending = pending_reg;
   wire       idle    = ~(up | down | strobe);
   wire       ev_up   = up | (idle & pending[1]);
   wire       ev_down = down | (idle & pending[0]);
 
   // Health, from last clock's comparison.
+  // base = slot - index + HEAD_OFFSET, kept by steps: the count's move less the
+  // index's, both at most one slot, so the sum is one of three values computed in
+  // parallel from registers; a flush (or reset) puts the index at 0.
+  wire         idx_up   = ev_up & ~at_top;
+  wire         idx_down = ~ev_up & ev_down & ~at_bottom;
+  wire         base_inc = (up & ~idx_up) | (~up & ~down & idx_down);
+  wire         base_dec = (down & ~idx_down) | (~up & ~down & idx_up);
+  wire [N-1:0] base_plus  = base_reg + 1'b1;
+  wire [N-1:0] base_minus = base_reg - 1'b1;
+  wire [N-1:0] base_home  = slot + HO32[N-1:0];
+  wire [N-1:0] base_next  = (rst | flush | demote) ? base_home :
+                            base_inc ? base_plus : base_dec ? base_minus : base_reg;
+
   wire [SW:0] score_plus = {1'b0, score_reg} + {1'b0, S_UP};
   reg  [SW-1:0] score_next;
   reg  [5:0]    quiet_law;
@@ -209,16 +245,26 @@ module prenc_track_word #(
       end else if (score_reg != {SW{1'b0}}) begin
         score_next = score_reg - 1'b1;
       end
+    end else if (raw_checked_reg) begin
+      quiet_law = raw_changed_reg ? 6'd0 : quiet_up;
+      if (raw_changed_reg) begin
+        score_next = (score_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_plus[SW-1:0];
+      end else if (score_reg != {SW{1'b0}}) begin
+        score_next = score_reg - 1'b1;
+      end
     end
   end
-  wire demote = law_reg & (score_next >= S_LIMIT);
+  wire demote = law_reg & (score_reg >= S_LIMIT);  // registered: off the score path
 
-  wire [SW:0] score_mid_plus = {1'b0, score_next} + {1'b0, S_UP};
+  // &known_next of the event below, from the registers in parallel with it.
+  wire full_after = (ev_up & at_top)      ? ((&known_reg[N-2:0]) & (ext_hi_reg != 6'd0)) :
+                    (ev_down & at_bottom) ? ((&known_reg[N-1:1]) & (ext_lo_reg != 6'd0)) :
+                    (ev_up | ev_down)     ? (&known_reg) :
+                    (strobe & ~law_reg)   ? (&(known_reg | at_index)) : (&known_reg);
+
   wire        changed        = head ^ bit_here;
 
-  reg [N-1:0]  word_next;
   reg [N-1:0]  known_next;
-  reg [IW-1:0] index_next;
   reg          law_next;
   reg [SW-1:0] score_after;
   reg [1:0]    pending_next;
@@ -232,12 +278,12 @@ module prenc_track_word #(
     index_next   = index_reg;
     law_next     = law_reg;
     score_after  = score_next;
-    pending_next = idle ? 2'b00 : pending;
+    pending_next = (idle ? 2'b00 : pending_reg) | {realign_up, realign_down};
     ext_lo_next  = ext_lo_reg;
     ext_hi_next  = ext_hi_reg;
     quiet_next   = quiet_law;
     if (ev_up) begin
-      if (index_reg == LAST) begin
+      if (at_top) begin
         word_next   = {word_reg[N-2:0], fwd_bit};
         known_next  = {known_reg[N-2:0], ext_hi_reg != 6'd0};
         ext_lo_next = !known_reg[N-1] ? 6'd0 : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_reg + 1'b1;
@@ -246,7 +292,7 @@ module prenc_track_word #(
         index_next = index_reg + 1'b1;
       end
     end else if (ev_down) begin
-      if (index_reg == {IW{1'b0}}) begin
+      if (at_bottom) begin
         word_next   = {inv_bit, word_reg[N-1:1]};
         known_next  = {ext_lo_reg != 6'd0, known_reg[N-1:1]};
         ext_hi_next = !known_reg[0] ? 6'd0 : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_reg + 1'b1;
@@ -255,26 +301,18 @@ module prenc_track_word #(
         index_next = index_reg - 1'b1;
       end
     end else if (strobe && !law_reg) begin
-      word_next[LAST - index_reg]  = head;
-      known_next[LAST - index_reg] = 1'b1;
+      word_next  = (word_reg & ~at_index) | (at_index & {N{head}});
+      known_next = known_reg | at_index;
       if (changed) begin
         ext_lo_next = 6'd0;
         ext_hi_next = 6'd0;
-      end
-      if (primed_reg) begin
-        quiet_next = changed ? 6'd0 : (quiet_law == Q_MAX) ? Q_MAX : quiet_law + 1'b1;
-        if (changed) begin
-          score_after = (score_mid_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_mid_plus[SW-1:0];
-        end else if (score_next != {SW{1'b0}}) begin
-          score_after = score_next - 1'b1;
-        end
       end
     end
     if (law_reg) begin
       ext_lo_next = 6'd0;
       ext_hi_next = 6'd0;
     end
-    primed_next = primed_reg | (&known_next);
+    primed_next = primed_reg | full_after;
     if (illegal && !law_reg) begin
       // The readings are in doubt (the count may be a slot off), not the window's place.
       known_next  = {N{1'b0}};
@@ -299,6 +337,10 @@ module prenc_track_word #(
 
   always @(posedge clk) begin
     word_reg        <= word_next;
+    fwd_bit         <= fwd_next;
+    inv_bit         <= inv_next;
+    at_top          <= (index_next == LAST);
+    at_bottom       <= (index_next == {IW{1'b0}});
     known_reg       <= known_next;
     index_reg       <= index_next;
     law_reg         <= law_next;
@@ -308,7 +350,11 @@ module prenc_track_word #(
     ext_hi_reg      <= ext_hi_next;
     primed_reg      <= primed_next;
     quiet_reg       <= quiet_next;
-    base_reg        <= slot - {{(N - IW){1'b0}}, index_next} + HO32[N-1:0];
+    full_reg        <= full_after & ~(illegal & ~law_reg) & ~flush & ~demote;  // = &known_next
+    supported_reg   <= law_next & (law_on | (score_next < S_LIMIT));  // = law_next & score_after < LIMIT
+    raw_checked_reg <= strobe & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
+    raw_changed_reg <= changed;
+    base_reg        <= base_next;  // = slot - index_next + HEAD_OFFSET
     strobe_reg      <= strobe;
     checked_reg     <= strobe & law_reg;
     mismatch_reg    <= strobe & law_reg & (head ^ bit_here);
@@ -323,6 +369,8 @@ module prenc_track_word #(
     if (rst) begin
       known_reg       <= {N{1'b0}};
       index_reg       <= {IW{1'b0}};
+      at_top          <= 1'b0;
+      at_bottom       <= 1'b1;
       law_reg         <= 1'b0;
       score_reg       <= {SW{1'b0}};
       pending_reg     <= 2'b00;
@@ -330,6 +378,10 @@ module prenc_track_word #(
       ext_hi_reg      <= 6'd0;
       primed_reg      <= 1'b0;
       quiet_reg       <= Q_MAX;
+      supported_reg   <= 1'b0;
+      full_reg        <= 1'b0;
+      raw_checked_reg <= 1'b0;
+      raw_changed_reg <= 1'b0;
       strobe_reg      <= 1'b0;
       checked_reg     <= 1'b0;
       mismatch_reg    <= 1'b0;
@@ -341,10 +393,10 @@ module prenc_track_word #(
 
   assign addr        = word_next;
   assign word        = word_reg;
-  assign full        = &known_reg;
+  assign full        = full_reg;
   assign base        = base_reg;
   assign law         = law_reg;
-  assign supported   = law_reg & (score_reg < S_LIMIT);
+  assign supported   = supported_reg;
   assign strobe_q    = strobe_reg;
   assign checked     = checked_reg;
   assign mismatch    = mismatch_reg;
@@ -352,7 +404,7 @@ module prenc_track_word #(
   assign mismatch_hi = mismatch_hi_reg;
   assign errors      = errors_reg;
   wire [6:0] ext_sum  = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
-  assign span        = (~&known_reg | law_reg) ? 6'd0 :
+  assign span        = (~full_reg | law_reg) ? 6'd0 :
                        (ext_sum > {1'b0, E_MAX}) ? E_MAX : ext_sum[5:0];
   assign settled     = (score_reg == {SW{1'b0}});
   assign quiet       = (quiet_reg == Q_MAX);

@@ -27,7 +27,8 @@ from .trajectory import Trajectory
 
 # Goals the core does not reach yet, with the share the tests hold it to meanwhile
 # (measured in the model and on Verilator; docs/architecture.md). The goal stays the goal.
-SHORT_OF_GOAL = {"missed_states": 0.78}
+# Empty: the core meets every availability goal of the table.
+SHORT_OF_GOAL: dict[str, float] = {}
 
 CLOCKS = 12_000       # one-way runs, as the table
 WALK_CLOCKS = 18_000  # runs with reversals: the table's plain-reader shares imply ~18,000

@@ -68,7 +68,7 @@ class Reader:
         self.mask = code.mask
         self.conditioner = InputConditioner(4, filter_len)
         self.quadrature = QuadratureDecoder()
-        self.sampler = Sampler()
+        self.sampler = Sampler(jump=True)
         self.position = Position(code.n)
         self.fsm = ModeFsm(code.n, lock_both=lock_both, lock_one=lock_one, dual_votes=dual_votes,
                            dual_span=dual_span)

@@ -4,6 +4,10 @@ A strobe is a CW step into q = 2 (A rose) or a CCW step into q = 1 (A fell). The
 heads are taken as they were at the input sample where A changed (delayed one
 clock to line up with the decoder's step). `moved` is false when the strobe's
 direction differs from the last one's: the disc crossed the same mid-slot point back.
+
+With `jump` (the core's sampler, JUMP = 1), an illegal transition whose quarter after
+is 1 or 2 also gives a landing reading: the heads at that sample, strobed one clock
+later unless a step or another illegal transition comes in between.
 """
 
 from __future__ import annotations
@@ -20,11 +24,15 @@ class Strobe(NamedTuple):
 
 
 class Sampler:
-    def __init__(self):
+    def __init__(self, jump: bool = False):
+        self.jump = jump
         self.head1_d = self.head2_d = 0
         self.out = Strobe(0, 0, 0, 0, 0)
         self.have_last = 0
         self.last_cw = 0
+        self.pending = 0          # a landing reading waiting for a quiet clock
+        self.pending_heads = (0, 0)
+        self.pending_cw = 0
 
     def clock(self, head1_in: int, head2_in: int, step: int, step_cw: int, quarter: int,
               break_in: int = 0, rst: int = 0) -> Strobe:
@@ -34,11 +42,18 @@ class Sampler:
             moved = int((not self.have_last) or step_cw == self.last_cw)
             out = Strobe(1, step_cw, moved, self.head1_d, self.head2_d)
             self.have_last, self.last_cw = 1, step_cw
+        elif self.pending and not (step or break_in):
+            out = Strobe(1, self.pending_cw, 1, *self.pending_heads)
+        pending = int(self.jump and break_in and quarter in (1, 2))
+        if pending:
+            self.pending_heads, self.pending_cw = (self.head1_d, self.head2_d), step_cw
         if break_in:
             self.have_last = 0
         if rst:
             out = out._replace(strobe=0)
             self.have_last = 0
+            pending = 0
+        self.pending = pending
         self.head1_d, self.head2_d = head1_in, head2_in
         self.out = out
         return out

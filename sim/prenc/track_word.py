@@ -80,6 +80,8 @@ class TrackWord:
         self.strobe = 0         # a strobe was handled on the last clock
         self.checked = 0        # ... in law mode: compared with the window
         self.mismatch = 0       # ... and disagreed
+        self.raw_checked = 0    # ... in raw mode: a bit read or predicted before was read again
+        self.raw_changed = 0    # ... and the reading changed it
         self.mismatch_lo = 0
         self.mismatch_hi = 0
         self.score = 0
@@ -115,12 +117,14 @@ class TrackWord:
               dual: int = 0, dual_cw: int = 0,
               rst: int = 0, error_max: int = 0xFFFF, clear_errors: int = 0) -> None:
         """One rising edge. `slot` is the slot count after this clock's move. `realign`
-        (+1 / -1) moves the index one slot, on the first clock without an event."""
+        (+1 / -1) moves the index one slot, on the first clock without an event after
+        this one."""
         n, word, known, index, law = self.n, self.word, self.known, self.index, self.law
-        pending = realign or self.realign
+        pending = self.realign  # the judge's pulse waits a clock in the register
         if pending and not (ev.up or ev.down or ev.strobe):
             ev = TrackEvent(up=int(pending > 0), down=int(pending < 0), illegal=ev.illegal)
             pending = 0
+        pending = pending or realign
         # Health from last clock's comparison (registered mismatch).
         score = self.score
         alt = self.mismatch_lo if dual_cw else self.mismatch_hi
@@ -128,6 +132,9 @@ class TrackWord:
         if self.checked and not (dual and self.mismatch != alt):
             score = min(score + self.score_up, self.score_limit) if self.mismatch else max(score - 1, 0)
             quiet = 0 if self.mismatch else min(quiet + 1, self.quiet_max)
+        elif self.raw_checked:  # last clock's raw reading of a read or predicted bit
+            score = min(score + self.score_up, self.score_limit) if self.raw_changed else max(score - 1, 0)
+            quiet = 0 if self.raw_changed else min(quiet + 1, self.quiet_max)
         demote = law and score >= self.score_limit
         errors = self.errors
         if self.checked and self.mismatch and errors < error_max:
@@ -135,6 +142,7 @@ class TrackWord:
         if clear_errors:
             errors = 0
         mismatch = mismatch_lo = mismatch_hi = 0
+        raw_checked = raw_changed = 0
         ext_lo, ext_hi, lowest = self.ext_lo, self.ext_hi, 1 << (n - 1)  # index 0 is the MSB
         if ev.up:
             if index == n - 1:
@@ -164,9 +172,9 @@ class TrackWord:
                 changed = ev.head != self.bit(word, index)
                 if changed:
                     ext_lo = ext_hi = 0  # a new word: the readings outside agreed with the old one
-                if self.primed:  # the bit was read or predicted: a check of the head
-                    score = min(score + self.score_up, self.score_limit) if changed else max(score - 1, 0)
-                    quiet = 0 if changed else min(quiet + 1, self.quiet_max)
+                # The bit was read or predicted: a check of the head, scored next clock
+                # (a lock turning the track to law mode now starts it afresh).
+                raw_checked, raw_changed = int(self.primed and not law_on), int(changed)
                 word = (word & ~b & self.mask) | (b if ev.head else 0)
                 known |= b
         if law:
@@ -188,6 +196,7 @@ class TrackWord:
         self.strobe = int(ev.strobe and not rst)
         self.checked = int(ev.strobe and self.law and not rst)
         self.mismatch, self.mismatch_lo, self.mismatch_hi = mismatch, mismatch_lo, mismatch_hi
+        self.raw_checked, self.raw_changed = int(raw_checked and not rst), raw_changed
         self.addr = word
         self.realign = pending
         self.word, self.known, self.index, self.law = word, known, index, law

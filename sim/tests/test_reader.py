@@ -92,7 +92,9 @@ def test_a_reading_that_changes_the_word_empties_the_span():
     assert t.span == 3
     t.clock(TrackEvent(up=1), (n + 3) & code.mask)
     t.clock(TrackEvent(strobe=1, head=1 - bit(n + 3)), (n + 3) & code.mask)  # a misread at a new slot
-    assert t.span == 0 and t.score == t.score_up and not t.settled
+    assert t.span == 0 and t.score == 0
+    t.clock(TrackEvent(), (n + 3) & code.mask)  # the check is scored on the next clock
+    assert t.score == t.score_up and not t.settled
 
 
 def test_a_noisy_head_never_settles():

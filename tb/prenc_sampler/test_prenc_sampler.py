@@ -1,8 +1,10 @@
 """prenc_sampler: strobes, direction, `moved` and head readings, against the model.
 
 Inputs come from the datapath model chain on virtual-encoder runs with random
-motion and dithering across A's edge (the chain itself is checked against the
-truth in sim/tests/test_datapath.py).
+motion, dithering across A's edge and missed quadrature states (the chain itself is
+checked against the truth in sim/tests/test_datapath.py); the expected outputs from
+prenc.sampler.Sampler with the same JUMP (landing readings after a missed state: the
+core's sampler).
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from prenc.datapath import Datapath
 from prenc.debruijn import Code
 from prenc.encoder import Disc, VirtualEncoder
 from prenc.faults import MissedQuadratureState
+from prenc.sampler import Sampler
 from prenc.trajectory import Trajectory
 from runner import SIMULATORS, run
 from cocotb.clock import Clock
@@ -29,16 +32,18 @@ def scenario(seed: int):
     for _ in range(5):
         traj.move_to(80.5, 0.02).move_to(80.49, 0.02)  # dither on A's edge
     traj.move_to(75.2, 0.2)
-    enc = VirtualEncoder(Disc(10), faults=[MissedQuadratureState(count=3, seed=seed)]).run(traj)
+    enc = VirtualEncoder(Disc(10), faults=[MissedQuadratureState(count=30, seed=seed)]).run(traj)
     return Datapath(Code(10), 0).run(enc, RESET)
 
 
 @cocotb.test()
 async def matches_model_through_reversals_and_breaks(dut):
     seed = rng().randrange(1 << 30)
+    jump = int(dut.JUMP.value)
     trace = scenario(seed)
+    model = Sampler(jump=bool(jump))
     cocotb.start_soon(Clock(dut.clk, 10, unit="ns").start())
-    strobes = 0
+    strobes = landings = 0
     for k, now in enumerate(trace):
         before = trace[k - 1] if k else None
         inputs = {"rst": int(k < RESET), "head1_in": 0, "head2_in": 0, "step": 0, "step_cw": 0,
@@ -47,15 +52,22 @@ async def matches_model_through_reversals_and_breaks(dut):
             inputs.update(head1_in=before.clean[0], head2_in=before.clean[1], step=before.quad.step,
                           step_cw=before.quad.step_cw, quarter=before.quad.quarter,
                           break_in=before.quad.illegal)
-        s = now.strobe
+        s = model.clock(inputs["head1_in"], inputs["head2_in"], inputs["step"], inputs["step_cw"],
+                        inputs["quarter"], break_in=inputs["break_in"], rst=inputs["rst"])
         expected = {"strobe": s.strobe}
         if s.strobe and k >= RESET:
             expected.update(strobe_cw=s.cw, strobe_moved=s.moved, strobe_head1=s.head1, strobe_head2=s.head2)
             strobes += 1
+            landings += s.strobe and not now.strobe.strobe  # not a mid-slot strobe
         await clock_and_check(dut, inputs, expected if k >= 1 else None, lambda: f"clock {k}, seed {seed}")
     assert strobes > 200
+    if jump:
+        assert landings >= 1, "no landing reading after the missed states"
+    else:
+        assert landings == 0
 
 
+@pytest.mark.parametrize("jump", [0, 1])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_sampler(simulator):
-    run(__file__, TOPLEVEL, simulator)
+def test_prenc_sampler(simulator, jump):
+    run(__file__, TOPLEVEL, simulator, parameters={"JUMP": jump})
