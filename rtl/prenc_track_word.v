@@ -351,7 +351,8 @@ module prenc_track_word #(
     primed_reg      <= primed_next;
     quiet_reg       <= quiet_next;
     full_reg        <= full_after & ~(illegal & ~law_reg) & ~flush & ~demote;  // = &known_next
-    supported_reg   <= law_next & (law_on | (score_next < S_LIMIT));  // = law_next & score_after < LIMIT
+    // supported_reg = law_next & (score_after < LIMIT), without the raw-mode update
+    supported_reg   <= law_next & (law_on | (score_next < S_LIMIT));
     raw_checked_reg <= strobe & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
     raw_changed_reg <= changed;
     base_reg        <= base_next;  // = slot - index_next + HEAD_OFFSET

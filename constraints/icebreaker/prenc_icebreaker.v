@@ -1,7 +1,7 @@
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
-//   12 MHz (pin 35) -> SB_PLL40_PAD -> 18 MHz system clock: 3 Mbaud is 6 clocks per bit,
-//   1 Mbaud 18, 115200 baud 156 (0.2 % slow). The UP5K closes the core at about 23 MHz.
+//   12 MHz (pin 35) -> SB_PLL40_PAD -> 24 MHz system clock: 3 Mbaud is 8 clocks per bit,
+//   1 Mbaud 24, 115200 baud 208 (0.2 % fast). The UP5K closes this top at about 34 MHz.
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
@@ -43,16 +43,16 @@ module prenc_icebreaker #(
   output wire LED5
 );
 
-  localparam integer CLK_HZ = 18000000;
+  localparam integer CLK_HZ = 24000000;
 
   wire clk;
   wire locked;
 
-  // 12 MHz x 48 / 2^5 = 18 MHz (yowasp-icepll -i 12 -o 18): VCO 576 MHz.
+  // 12 MHz x 64 / 2^5 = 24 MHz (yowasp-icepll -i 12 -o 24): VCO 768 MHz.
   SB_PLL40_PAD #(
     .FEEDBACK_PATH ("SIMPLE"),
     .DIVR          (4'b0000),
-    .DIVF          (7'b0101111),
+    .DIVF          (7'b0111111),
     .DIVQ          (3'b101),
     .FILTER_RANGE  (3'b001)
   ) u_pll (

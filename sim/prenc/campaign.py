@@ -87,7 +87,9 @@ def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: Camp
         return bits[0], bits[1]
 
     def emit(step: int, cw: int, illegal: int, judged: bool = True, rst: int = 0) -> None:
-        h1, h2 = heads(h) if step else (0, 0)
+        # The heads as the pins show them on a step or an illegal transition (the core
+        # reads them where a missed state landed); between events nothing reads them.
+        h1, h2 = heads(h) if (step or illegal) else (0, 0)
         q = QuadratureOutput(h % 4, step, cw, illegal, 0, 0)
         out = reader.clock_decoded(q, h1, h2, rst=rst)
         truth.append(h % (4 * length) if judged else None)

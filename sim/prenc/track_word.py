@@ -135,7 +135,7 @@ class TrackWord:
         elif self.raw_checked:  # last clock's raw reading of a read or predicted bit
             score = min(score + self.score_up, self.score_limit) if self.raw_changed else max(score - 1, 0)
             quiet = 0 if self.raw_changed else min(quiet + 1, self.quiet_max)
-        demote = law and score >= self.score_limit
+        demote = law and self.score >= self.score_limit  # from the register: a clock after the limit
         errors = self.errors
         if self.checked and self.mismatch and errors < error_max:
             errors += 1
