@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # prenc: pseudorandom absolute encoder reader.
 #
 #   make demo    generate the ROM, run the virtual encoder, print and plot what it read

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_board: the reader as it goes on a board, without the board's clock and pins.
 //
 //   encoder pins -> prenc_core -> prenc_host_link (UART to the PC, docs/host-protocol.md)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_converter: parallel lookup converter, code word -> absolute slot.
 //
 // A registered ROM read: the N-bit code word w(p) presented with word_valid on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sources of prenc_core, relative to this folder (verilator -F, or -f from rtl/).
 prenc_input_conditioner.v
 prenc_quadrature.v

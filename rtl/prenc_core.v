@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_core: the reader of a pseudorandom absolute encoder, pins to verified position.
 //
 //   pins -> prenc_input_conditioner -> prenc_quadrature -> prenc_sampler (strobes)

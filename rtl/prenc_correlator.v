@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_correlator: position of a whole-window reading by summed cross-correlation.
 //
 // For a line or area sensor that sees all of a reading at once: M tracks of N bits,

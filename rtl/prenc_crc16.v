@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_crc16: one byte of CRC-16/CCITT-FALSE, combinational.
 //
 // Polynomial x^16 + x^12 + x^5 + 1 (0x1021), MSB first, no reflection, no final

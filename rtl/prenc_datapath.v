@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_datapath: the reader's datapath from the pins to the checked code word.
 //
 //   head1, head2, sync_a, sync_b

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_disc_law: the disc's next-bit laws applied to a code word (combinational).
 //
 // word = W(p), the MSB is s(p) (datasheet). With the de Bruijn term in brackets:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_frame_rx: the host link's frame parser, bytes in, checked frames out.
 //
 // Frame (docs/host-protocol.md):  A5 | TYPE | LEN | PAYLOAD[LEN] | CRC16 hi | lo

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_frame_tx: the host link's frame sender, a frame in, bytes to the UART out.
 //
 // `start` takes TYPE, LEN and the payload (byte i at [8i+7:8i]) and sends

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_host_link: the board's side of the host protocol (docs/host-protocol.md).
 //
 // A UART (prenc_uart_rx / prenc_uart_tx), a frame parser and a frame sender, and the

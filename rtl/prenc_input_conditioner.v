@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_input_conditioner: synchronizers and glitch filters for asynchronous inputs.
 //
 // Each input bit goes through a two-flop synchronizer, then a glitch filter: a new

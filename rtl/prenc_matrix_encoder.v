@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_matrix_encoder: a matrix-code absolute encoder with an SSI output.
 //
 // The matrix reader (prenc_matrix_reader) on the image sensor's pixel stream, its

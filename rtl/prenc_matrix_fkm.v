@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_matrix_fkm: the FKM de Bruijn sequence, one symbol per clock, in hardware.
 //
 // Emits the lexicographically least de Bruijn sequence of order N over 2^B symbols

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sources of prenc_matrix_reader, relative to this folder (verilator -F, or -f from rtl/).
 prenc_matrix_reader.v
 prenc_matrix_table.v

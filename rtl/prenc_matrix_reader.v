@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_matrix_reader: absolute position from one image of a matrix-code disc.
 //
 // A small image sensor (the paper's prototype: 15 x 15 pixels) streams a frame in

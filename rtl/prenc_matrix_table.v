@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_matrix_table: window address -> position, for a matrix code.
 //
 // The table of `prenc matrix rom`: address = the window's A data bits (first column

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_mode_fsm: the judge of the offset; the modes and the only source of pos_valid.
 //
 // The position is the slot count plus an offset; this machine decides the offset and

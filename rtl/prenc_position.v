@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_position: the slot count, the reader's events, and the count delayed to
 // meet the judge's decision.
 //

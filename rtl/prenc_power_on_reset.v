@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_power_on_reset: the board tops' reset, synchronous to the PLL's clock.
 //
 // `rst` is high from configuration until the PLL has locked and the reset button has

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_predictor: dual-head LFSR predictor, which tells which track erred.
 //
 // At each strobe it predicts what both heads must read, from the current word

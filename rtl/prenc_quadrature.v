@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_quadrature: quadrature decoder of the sync track.
 //
 // Maps (A, B) to the datasheet's quarter index q = 0..3 ((0,1), (0,0), (1,0), (1,1)),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_rom_check: simulation-time check of a $readmemh table file.
 //
 // A missing table file must not become an all-X or all-zero ROM. This module opens

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_sampler: mid-slot sampling strobes and the head readings taken there.
 //
 // The datasheet samples the code tracks at mid-slot: on A rising going CW (q 1 -> 2)

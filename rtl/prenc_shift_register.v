@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_shift_register: the main code word, formed from whichever head leads.
 //
 // At slot p the word is W(p) = s(p) .. s(p+N-1), s(p) in the MSB. Head 1 reads

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_ssi: SSI output, the synchronous serial interface of absolute encoders.
 //
 // The controller drives the clock (ssi_clk, idle high); the encoder drives data

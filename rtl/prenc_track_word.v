@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_track_word: one head's code word in the reader's count space.
 //
 // The head's readings at the slot counts base .. base+N-1 form an N-bit word (the

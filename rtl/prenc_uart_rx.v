@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_uart_rx: UART receiver, 8 data bits, no parity, 1 stop bit (8N1), LSB first.
 //
 // The line goes through a two-flop synchronizer. A falling edge starts a byte; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_uart_tx: UART transmitter, 8N1, LSB first.
 //
 // `start` with a byte while `ready` is high sends it: a start bit, 8 data bits and

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """`make bench`: the project's benchmarks, side by side in one run.
 
 1. ROM generation: wall time of `prenc rom --bits N` (the user's command, Python

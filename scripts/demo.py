@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """`make demo`: generate the ROM, run the RTL core on the virtual encoder through the
 demo scenario (prenc.core_demo), print the story and plot it."""
 

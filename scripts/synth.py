@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """`make synth BOARD=...`: the open FPGA flow, from Verilog to a bitstream and a report.
 
     python scripts/synth.py --board icebreaker [--bits 10] [--out build/synth]

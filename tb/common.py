@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """cocotb helpers shared by the testbenches: clock, reset, clocked drive-and-check.
 
 Timing convention of every testbench: inputs change just after a falling edge,

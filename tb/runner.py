@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Build and run a cocotb testbench on Verilator or Icarus, from pytest.
 
 Every testbench's pytest entry point calls `run()`:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """UART at the pins, for testbenches: send bytes onto an input, receive from an output.
 
 Bit times are in clocks of the testbench clock (common.PERIOD_NS), as the RTL

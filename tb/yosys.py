@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Synthesize a top with YoWASP Yosys and return its cell counts and log.
 
     result = synthesize("prenc_converter", "ice40", {"N": 10, "ROM_FILE": rom})

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sources of prenc_icebreaker, relative to this folder.
 ../../rtl/prenc_input_conditioner.v
 ../../rtl/prenc_quadrature.v

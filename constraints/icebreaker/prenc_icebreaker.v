@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
 //   12 MHz (pin 35) -> SB_PLL40_PAD -> 24 MHz system clock: 3 Mbaud is 8 clocks per bit,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // prenc_ulx3s: the reader on a ULX3S (ECP5 LFE5U-85F, 25 MHz oscillator).
 //
 //   25 MHz (G2) -> EHXPLLL -> 50 MHz system clock (x2; an ECP5 PLL cannot make

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc: reference model and tools for the pseudorandom absolute encoder reader.
 
 Plain Python (numpy), no simulator imports: the cocotb testbenches in tb/ import

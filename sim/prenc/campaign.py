@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The fault campaign of the reference reader: millions of strobes, seeded.
 
 Events are made straight from a random walk of the disc in quarter steps, without

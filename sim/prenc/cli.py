@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The `prenc` command.
 
     prenc rom    --bits N [--taps a,b,...] [--format hex|bin|mif|coe|mem] -o FILE

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Code word -> slot conversion: the model of rtl/prenc_converter.v, and the serial
 method of the literature it replaces.
 

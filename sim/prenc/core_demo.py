@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`make demo`: the reader core on a virtual encoder, told as a story.
 
 The scenario (N = 10, FILTER = 2) shows start-up, both resolutions, a reversal, a

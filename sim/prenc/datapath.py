@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The reader's datapath models chained: pins -> conditioner -> quadrature -> sampler
 -> shift register -> predictor, clock by clock.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The disc's code: an LFSR sequence completed to a de Bruijn sequence.
 
 Definitions follow the disc datasheet (shared/encoder-disc.md):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`prenc demo`: the default ROM and the virtual encoder on a short trajectory.
 
 Until the reader core exists this shows the ground it will stand on: the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Printable discs: every code of the project as an SVG to print on film, with a PNG preview.
 
     prenc disc dual   [--bits N] [--taps a,b] [--shift D] [dimensions] -o disc.svg [--png disc.png]

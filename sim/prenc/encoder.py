@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The virtual encoder: disc, two heads and the sync track, sampled on a clock.
 
 Geometry (shared/encoder-disc.md): track 1 carries s(x) at slot x, track 2 carries

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Faults of the datasheet as composable, seeded objects.
 
 Each fault changes the signals of an `EncoderRun` in place through `apply(run)`;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The availability goals of the core (issue 15's table), as runnable scenarios.
 
 Each goal is a scenario on the default disc (N = 10 unless given) at 1/48 slot per

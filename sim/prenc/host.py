@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`prenc host`: read positions from the board over its UART (pyserial).
 
     prenc host read    --port P [--baud B] [--kind abs|hybrid|incremental|tracks|status] [--json]

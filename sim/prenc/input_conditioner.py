@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Model of rtl/prenc_input_conditioner.v: two-flop synchronizer, then glitch filter.
 
 Clock-accurate: `clock()` takes the inputs before a rising edge and returns the

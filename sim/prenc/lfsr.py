@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Maximal-length LFSR sequences over GF(2).
 
 A feedback set T (the "taps") defines the recurrence of the disc datasheet:

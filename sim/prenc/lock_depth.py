@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """How deep the reader must verify before it places a position: the arithmetic.
 
 A lock reads k strobes of one-directional travel and accepts the offset they

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The plain verifying reader: the baseline that `make bench` sets beside the core.
 
 What a straightforward absolute-encoder reader does, with the same front end as the

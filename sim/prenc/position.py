@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Model of rtl/prenc_position.v: the slot count, the reader's events, and the output.
 
 From the quadrature decoder's registered step (clock t) it registers, on t+1, the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Model of rtl/prenc_predictor.v: what each head must read at a strobe.
 
 From the word W(p) before the strobe and its direction:

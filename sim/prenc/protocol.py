@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The host protocol between the board and the PC (docs/host-protocol.md).
 
 The Python side of rtl/prenc_frame_rx.v, rtl/prenc_frame_tx.v and the payload

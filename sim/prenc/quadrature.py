@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Model of rtl/prenc_quadrature.v: quarter index, steps, illegal transitions.
 
 q = {A, A xnor B}: (A,B) = (0,1), (0,0), (1,0), (1,1) give q = 0, 1, 2, 3

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The reader core, clock by clock: the model that prenc_core must equal.
 
     reader = Reader(Code(10), filter_len=2)

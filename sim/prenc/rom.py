@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Conversion ROM tables and disc track patterns, in the formats FPGA tools load.
 
 The conversion ROM maps a code word to its slot: address w(p), data p. Both are N

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """End-to-end scenarios for the reader, and the check against the true angle.
 
 A scenario is a trajectory and a list of faults for a disc of N bits and a glitch

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """SSI, the synchronous serial interface of absolute encoders: the controller's side.
 
 The model of what rtl/prenc_ssi.v sends, used by its testbench and documentation:

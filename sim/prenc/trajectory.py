@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Disc trajectories sampled on the reader's clock.
 
 A trajectory is the true disc angle theta (in slots, unwrapped: it may leave

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The converter models: parallel (one clock) and serial (LFSR stepping)."""
 
 from __future__ import annotations

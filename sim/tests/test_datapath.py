@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The datapath models chained, against the truth of the virtual encoder.
 
 The RTL of each stage is compared with its model in tb/; here the models prove

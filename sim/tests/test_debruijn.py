@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The disc code: de Bruijn completion, indexing, windows and next-bit laws."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`prenc demo` runs from nothing and shows what the README promises."""
 
 from __future__ import annotations

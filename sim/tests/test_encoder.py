@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The virtual encoder: geometry, sync track, trajectories, event stream, faults.
 
 Expected values are written from the datasheet's definitions, not from the

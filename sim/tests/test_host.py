@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc host: the user's errors, one line each, and CRC errors that never stop it.
 
 The board here is a small Python responder on a real pseudo-terminal (the RTL

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """LFSR sequences and feedback sets: primitivity is computed, never assumed."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The lock-depth arithmetic (prenc.lock_depth): undetectable misread patterns of a
 lock after k strobes, enumerated on the disc itself."""
 

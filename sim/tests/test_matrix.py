@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """2-D matrix codes: generation, graph G, counting, the paper's example, ROMs, the
 parity track, the sensor model and the reader model, `prenc matrix` and `prenc disc`.
 

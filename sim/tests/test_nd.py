@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """(n,d)-sequences: searches, constructions, bounds, table, phasing, decoder, imaging.
 
 Expected values come from the definition (brute force over every cyclic sequence for

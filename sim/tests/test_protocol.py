@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc.protocol: CRC, frames, the parser fuzzed with random and corrupted streams."""
 
 from __future__ import annotations

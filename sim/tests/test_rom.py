@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`prenc rom` / `prenc tracks`: tables, vendor formats and bad input."""
 
 from __future__ import annotations

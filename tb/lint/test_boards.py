@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The board builds: `make synth` for each board (scripts/synth.py), and its failures.
 
 Each board must place, route and meet its clock with the default N = 10 ROM, and

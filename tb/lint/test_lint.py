@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Every RTL file is clean Verilog-2005 for Verilator, Icarus and Yosys, in house style.
 
 New modules are picked up automatically: every top's file list rtl/*.f is linted
@@ -57,7 +58,8 @@ def test_yosys_reads_without_warnings(source):
 def test_house_style(source):
     text = source.read_text()
     lines = text.splitlines()
-    assert lines[0].startswith(f"// {source.stem}:"), "header: '// <module>: <purpose>'"
+    assert lines[0] == "// SPDX-License-Identifier: Apache-2.0", "first line: the SPDX licence line"
+    assert lines[1].startswith(f"// {source.stem}:"), "header: '// <module>: <purpose>'"
     code = [l for l in lines if l and not l.startswith("//")]
     assert code[:3] == ["`resetall", "`timescale 1ns / 1ps", "`default_nettype none"]
     assert code[-1] == "`resetall"

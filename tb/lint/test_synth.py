@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Every top synthesizes for iCE40 with Yosys: no latches, no warnings, and
 `check -assert` passes (it fails on multiple drivers, undriven nets and loops).
 

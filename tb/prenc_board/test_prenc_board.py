@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_board end to end: the real `prenc host` commands, through a pseudo-terminal,
 to the board top on Verilator while the virtual encoder turns the disc.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Benchmark probe (run by scripts/bench.py, not by pytest): measure, don't assert.
 
 Presents the word of the last slot, W(L-1), the serial converter's worst case, and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_converter: every code word converts to the slot the disc code gives it.
 
 The expected values come from the Python model (`prenc.converter.Converter`,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Benchmark probe (run by scripts/bench.py, not by pytest): the RTL fault campaign.
 
 Seeded segments of a random walk with a random mix of the datasheet's faults

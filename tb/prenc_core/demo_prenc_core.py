@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The RTL half of `make demo` (run by scripts/demo.py, not by pytest): drive the
 demo scenario onto prenc_core, switch to 12 bits on the way, save the outputs per
 clock to $DEMO_OUT (.npz)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_core end to end: the virtual encoder drives the pins through every scenario
 of prenc.scenarios (start-up at rest and moving, both directions, reversals,
 acceleration, each fault of the datasheet alone and combined).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Benchmark probe (run by scripts/bench.py, not by pytest): measure, don't assert.
 
 Decodes back-to-back readings of the experiment's two-parallel-(10,2) cylinder (the

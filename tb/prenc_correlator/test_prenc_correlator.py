@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_correlator: bit-exact against the Python decoder (prenc.nd.correlator).
 
 Soft decision: readings from the imaging simulator (prenc.nd.imaging) of two

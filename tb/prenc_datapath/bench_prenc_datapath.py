@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Benchmark probe (run by scripts/bench.py, not by pytest): maximum tracking rate.
 
 For this build's FILTER, drive the sync pins with quadrature states that each last

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_datapath: the five stages wired together, against the model chain clock by
 clock (with faults) and against the truth of the virtual encoder."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_frame_rx fuzzed: random and corrupted byte streams, against prenc.protocol.FrameParser.
 
 The stream mixes good frames, frames with errors the CRC-16 is guaranteed to catch

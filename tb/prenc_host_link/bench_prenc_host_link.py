@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Benchmark for `make bench`: the link's achieved update rate, streaming back to back.
 
 For each kind, asks for a stream with a 1 us period (shorter than any frame) and

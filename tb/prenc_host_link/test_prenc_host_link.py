@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_host_link: the protocol over the UART pins, at 115200, 1 M and 3 Mbaud.
 
 Requests are sent bit by bit onto `rx` and answers decoded from `tx` with

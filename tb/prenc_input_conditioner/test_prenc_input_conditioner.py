@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_input_conditioner: synchronizer + glitch filter, against its model and its rule.
 
 Inputs are the virtual encoder's four signals on a random walk, with bounce and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_matrix_reader: positions from sensor images equal the model and the truth.
 
 Images come from the Python sensor model (`prenc.matrix.sensor`: blur, noise,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_matrix_table: the table that builds itself equals the ROM of `prenc matrix rom`.
 
 With TABLE = "generator" the on-chip FKM generator (prenc_matrix_fkm) fills the

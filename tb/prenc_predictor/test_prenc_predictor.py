@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_predictor: exhaustive over every word, both directions, both kinds of strobe
 and every pair of head readings, against the model, for several N and feedback sets.
 """

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_quadrature: steps, direction, illegal transitions and the step count.
 
 Expected values: the model clock by clock (with faults), and the truth of the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_sampler: strobes, direction, `moved` and head readings, against the model.
 
 Inputs come from the datapath model chain on virtual-encoder runs with random

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_shift_register: the word, its known bits and their count, against the model.
 
 Inputs are the sampler outputs of the datapath model chain on virtual-encoder runs

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """prenc_ssi read by an SSI controller model at 100 kHz, 500 kHz, 1 MHz and 2 MHz.
 
 The controller (this testbench) drives ssi_clk with WIDTH + 2 pulses (+1 to see the line low) and samples

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """2-D matrix codes: n tracks on which every n x n window appears exactly once.
 
 From the third paper the project grew from (Dziwinski, "A Novel Approach of an

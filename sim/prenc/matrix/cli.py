@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`prenc matrix`: 2-D matrix codes.
 
     prenc matrix generate --n N [--checksum] [--format tracks|columns|json] [--cross-check] [-o FILE]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Matrix codes: generation, windows and the window-to-address bit order.
 
 A matrix code of order n is a cyclic sequence of L columns; column x holds the cells

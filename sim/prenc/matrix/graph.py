@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The paper's graph G (Definition 3) and its Hamiltonian cycles.
 
 The vertices of G are the 2^(n*n) binary n x n matrices. There is an arc from A to B

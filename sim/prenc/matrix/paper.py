@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The paper's 16-position example (n = 2), checked against Definition 3.
 
 The paper lists the Hamiltonian cycle

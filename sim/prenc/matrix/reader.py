@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The matrix-code reader: the integer model of rtl/prenc_matrix_reader.v.
 
 From one frame: the darkest and brightest pixel of the tracks' rows, the edge

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Conversion ROMs of matrix codes: address = window, data = position.
 
 The same formats as `prenc rom` (hex, bin, mif, coe, mem). Address and data are

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """An image sensor looking at a matrix-code disc: the test images of the reader.
 
 The sensor sees a small patch of the n tracks (the paper's prototype: 15 x 15

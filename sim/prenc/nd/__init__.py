@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Error-tolerant codes: (n,d)-sequences and reading them by correlation.
 
 From the second paper the project grew from (Wolfe & Chirikjian, "Error-Tolerant

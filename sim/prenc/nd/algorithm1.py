@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The paper's Algorithm 1: breadth-first growth of paths in the de Bruijn graph.
 
 Kept as the baseline the exact search is measured against (`make bench`). Every

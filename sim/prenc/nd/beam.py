@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """(n,d)-sequences of a chosen length K: a beam search with a planned closure.
 
 The experiments need sequences of one given length (K = 170 in the paper), which the

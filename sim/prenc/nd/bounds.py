@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Sound upper bounds on the length K of an (n,d)-sequence.
 
 The K windows of an (n,d)-sequence are K distinct words of length n with pairwise

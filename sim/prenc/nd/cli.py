@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`prenc nd`: (n,d)-sequences, parallel phasing, the imaging experiment, decoder ROMs.
 
     prenc nd search  --n N --d D [--method exact|algorithm1|lfsr] [--length K] [--time-limit S] [--json]

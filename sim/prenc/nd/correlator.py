@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The correlation decoder: the model of rtl/prenc_correlator.v, in the same integers.
 
 A line or area sensor sees a whole reading at once: for each of m tracks, n bits, p

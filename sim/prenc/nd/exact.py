@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Exact search for long (n,d)-sequences: depth-first, one canonical rotation.
 
 Every cyclic sequence has a smallest window s. The search tries s = 0, 1, 2, ... and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The paper's experiment (its figure 5): six encoders on a cylinder against image noise.
 
 All sequences have K = 170 bits. Single tracks: a (10,1)-, an (8,1)- and a

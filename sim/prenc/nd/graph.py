@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The de Bruijn graph of n-bit windows and the Hamming balls the searches prune with.
 
 A window v (n bits, the oldest bit as MSB) has the two successors (v << 1 | b) mod 2^n.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The imaging simulator of the paper's sections 5 and 6: a camera looks at a cylinder.
 
 A cylinder (radius 55 mm, width 12 mm) carries m sequences of K bits side by side,

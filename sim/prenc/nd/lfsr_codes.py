@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Long (n,d)-sequences at once from maximal-length LFSR sequences.
 
 The m-sequence of a primitive polynomial of degree k < n has period 2^k - 1, and its

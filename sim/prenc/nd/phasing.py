@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Parallel (n,d)-sequences: the phasing that maximises the summed distance.
 
 m sequences of the same length K written side by side (tracks of a cylinder or a

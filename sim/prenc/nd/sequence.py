@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Windows of a cyclic binary sequence and the independent minimum-distance check.
 
 A sequence is a 1-D array (or string) of bits s(0..K-1). Its window at position i is

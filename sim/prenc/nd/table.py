@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Table 1 of the paper, recomputed and extended: the longest (n,d)-sequences.
 
 For each n and d the entry starts from the best construction (`lfsr_codes`: the
