@@ -208,26 +208,20 @@ module prenc_mode_fsm #(
   endgenerate
   reg signed [RW-1:0] rel_d;  // slot_ahead - anchor_reg
   reg                 far_d;
+  reg signed [RW-1:0] rel;    // this event's place
+  reg                 far;
+  wire [1:0] step2 = slot_ahead - slot[1:0];  // 0, 1 or 3 (-1)
+  wire signed [RW-1:0] rel_step = (step2 == 2'd1) ? 1 : (step2 == 2'd3) ? -1 : 0;
   always @(posedge clk) begin
     rel_d <= rel_n_w;
     far_d <= far_n;
+    rel   <= dual_reg ? rel_d : rel_step;
+    far   <= dual_reg & far_d;  // DUAL_SPAN >= 1
     if (rst) begin
       rel_d <= {RW{1'b0}};
       far_d <= 1'b0;
-    end
-  end
-  wire [1:0] step2 = slot_ahead - slot[1:0];  // 0, 1 or 3 (-1)
-  wire signed [RW-1:0] rel_step = (step2 == 2'd1) ? 1 : (step2 == 2'd3) ? -1 : 0;
-  wire signed [RW-1:0] rel_ahead = dual_reg ? rel_d : rel_step;
-  wire                 far_ahead = dual_reg & far_d;  // DUAL_SPAN >= 1
-  reg signed [RW-1:0] rel;
-  reg                 far;
-  always @(posedge clk) begin
-    rel <= rel_ahead;
-    far <= far_ahead;
-    if (rst) begin
-      rel <= {RW{1'b0}};
-      far <= 1'b0;
+      rel   <= {RW{1'b0}};
+      far   <= 1'b0;
     end
   end
   // Fresh (outside the slots visited since the transition), also one clock ahead:

@@ -236,19 +236,16 @@ module prenc_track_word #(
   reg  [5:0]    quiet_law;
   wire alt_reg = dual_cw ? mismatch_lo_reg : mismatch_hi_reg;
   wire [5:0] quiet_up = (quiet_reg == Q_MAX) ? Q_MAX : quiet_reg + 1'b1;
+  // Last clock's check of the head: law mode (unless the two hypotheses of a missed
+  // state predict different bits there) or raw mode; never both on one clock.
+  wire scored    = (checked_reg & ~(dual & (mismatch_reg != alt_reg))) | raw_checked_reg;
+  wire disagreed = checked_reg ? mismatch_reg : raw_changed_reg;
   always @* begin
     score_next = score_reg;
     quiet_law  = quiet_reg;
-    if (checked_reg && !(dual && (mismatch_reg != alt_reg))) begin
-      quiet_law = mismatch_reg ? 6'd0 : quiet_up;
-      if (mismatch_reg) begin
-        score_next = (score_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_plus[SW-1:0];
-      end else if (score_reg != {SW{1'b0}}) begin
-        score_next = score_reg - 1'b1;
-      end
-    end else if (raw_checked_reg) begin
-      quiet_law = raw_changed_reg ? 6'd0 : quiet_up;
-      if (raw_changed_reg) begin
+    if (scored) begin
+      quiet_law = disagreed ? 6'd0 : quiet_up;
+      if (disagreed) begin
         score_next = (score_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_plus[SW-1:0];
       end else if (score_reg != {SW{1'b0}}) begin
         score_next = score_reg - 1'b1;

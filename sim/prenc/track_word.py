@@ -130,12 +130,13 @@ class TrackWord:
         score = self.score
         alt = self.mismatch_lo if dual_cw else self.mismatch_hi
         quiet = self.quiet
-        if self.checked and not (dual and self.mismatch != alt):
-            score = min(score + self.score_up, self.score_limit) if self.mismatch else max(score - 1, 0)
-            quiet = 0 if self.mismatch else min(quiet + 1, self.quiet_max)
-        elif self.raw_checked:  # last clock's raw reading of a read or predicted bit
-            score = min(score + self.score_up, self.score_limit) if self.raw_changed else max(score - 1, 0)
-            quiet = 0 if self.raw_changed else min(quiet + 1, self.quiet_max)
+        # Last clock's check: law mode (unless the hypotheses of a missed state differ
+        # there) or raw mode (a read or predicted bit read again); never both.
+        scored = (self.checked and not (dual and self.mismatch != alt)) or self.raw_checked
+        disagreed = self.mismatch if self.checked else self.raw_changed
+        if scored:
+            score = min(score + self.score_up, self.score_limit) if disagreed else max(score - 1, 0)
+            quiet = 0 if disagreed else min(quiet + 1, self.quiet_max)
         demote = law and self.score >= self.score_limit  # from the register: a clock after the limit
         errors = self.errors
         if self.checked and self.mismatch and errors < error_max:
