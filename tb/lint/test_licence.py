@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The licence: LICENSE at the root, pyproject's licence field, and an SPDX line at the
 top of every source file of rtl/, sim/, tb/, scripts/ and constraints/ (issue 17)."""
 
