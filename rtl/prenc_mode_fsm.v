@@ -285,8 +285,8 @@ module prenc_mode_fsm #(
     dual_next        = dual_reg;
     // Outside dual the hypothesis state is held at its starting values (the event's
     // way and slot, nothing visited, no votes), ready for a transition judged now.
-    dual_cw_next     = dual_reg ? dual_cw_reg : illegal_cw;
-    anchor_next      = dual_reg ? anchor_reg : slot;
+    dual_cw_next     = dual_cw_ahead;
+    anchor_next      = anchor_next_w;
     lo_next          = dual_reg ? lo_reg : 1;
     hi_next          = dual_reg ? hi_reg : 0;
     votes_keep_next  = dual_reg ? votes_keep_reg : {DUAL_VOTES{1'b0}};

@@ -212,10 +212,9 @@ module prenc_track_word #(
 
   // A realignment waits in pending_reg and takes the first clock without an event
   // after the judge's pulse.
-  wire [1:0] pending = pending_reg;
   wire       idle    = ~(up | down | strobe);
-  wire       ev_up   = up | (idle & pending[1]);
-  wire       ev_down = down | (idle & pending[0]);
+  wire       ev_up   = up | (idle & pending_reg[1]);
+  wire       ev_down = down | (idle & pending_reg[0]);
 
   // Health, from last clock's comparison.
   // base = slot - index + HEAD_OFFSET, kept by steps: the count's move less the
@@ -349,8 +348,7 @@ module prenc_track_word #(
     primed_reg      <= primed_next;
     quiet_reg       <= quiet_next;
     full_reg        <= full_after & ~(illegal & ~law_reg) & ~flush & ~demote;  // = &known_next
-    // supported_reg = law_next & (score_after < LIMIT), without the raw-mode update
-    supported_reg   <= law_next & (law_on | (score_next < S_LIMIT));
+    supported_reg   <= law_next & (score_after < S_LIMIT);
     raw_checked_reg <= strobe & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
     raw_changed_reg <= changed;
     base_reg        <= base_next;  // = slot - index_next + HEAD_OFFSET
