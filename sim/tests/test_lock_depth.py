@@ -36,3 +36,18 @@ def test_deeper_locks_are_safer():
     assert depth_row(10, 2, 11).p_wrong[0.03] < depth_row(10, 2, 10).p_wrong[0.03]
     row = depth_row(12, 1, 25)
     assert row.p_wrong[0.001] < row.p_wrong[0.01] < row.p_wrong[0.03]
+
+
+def test_prefix_sums_equal_the_direct_comparison():
+    """The exact enumeration used for the table (every p and d, by prefix sums)
+    against the direct comparison of readings, for both geometries and overlaps."""
+    from prenc.lock_depth import weight_counts_exact
+
+    for n in (5, 6, 8):
+        code = Code(n)
+        sets = [reading_slots(n, 2, n + e) for e in (0, 2, 4)] + \
+               [reading_slots(n, 1, 2 * n + e) for e in (0, 3)]
+        for slots, hist in zip(sets, weight_counts_exact(code, sets)):
+            direct, starts = weight_counts(code, slots)
+            assert starts == code.length
+            assert hist.tolist() == direct.tolist()
