@@ -17,4 +17,6 @@ prenc_frame_rx.v
 prenc_frame_tx.v
 prenc_host_link.v
 prenc_ssi.v
+prenc_turns.v
+prenc_biss.v
 prenc_board.v

@@ -3,6 +3,7 @@
 //
 //   encoder pins -> prenc_core -> prenc_host_link (UART to the PC, docs/host-protocol.md)
 //                             -> prenc_ssi       (SSI to a motion controller)
+//                             -> prenc_turns -> prenc_biss (BiSS-C to a servo drive)
 //                             -> mode LEDs
 //
 // The board tops in constraints/<board>/ add the PLL, the power-on reset and the
@@ -14,12 +15,18 @@
 //   BAUD          UART baud rate (default 115200; CLK_HZ / BAUD >= 4, within 2 %)
 //   SSI_HYBRID    1: SSI sends pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   SSI_MONOFLOP_US   SSI monoflop time in microseconds (default 20)
+//   BISS_MT_BITS  BiSS-C multi-turn bits, 0..24 (default 12; 0: single-turn only)
+//   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
+//   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
+//                 period of the slowest MA). MA up to CLK_HZ / 5 (docs/biss-c.md)
 //
 // Ports
 //   clk, rst                       one clock; synchronous active-high reset (>= 4 clocks)
 //   head1, head2, sync_a, sync_b   the encoder's outputs (asynchronous)
 //   uart_rx, uart_tx               the host link
 //   ssi_clk, ssi_data, ssi_gray    SSI: clock from the controller, data, 1 = Gray code
+//   biss_ma, biss_slo              BiSS-C: clock from the master, data to it (SSI and
+//                                  BiSS-C are both built, on their own pins)
 //   led_valid                      pos_valid
 //   led_normal, led_reduced, led_incremental, led_acquire   the mode, one-hot
 //   pos_valid, mode                the core's, for test benches and debug headers
@@ -36,7 +43,10 @@ module prenc_board #(
   parameter integer CLK_HZ          = 24000000,
   parameter integer BAUD            = 115200,
   parameter integer SSI_HYBRID      = 1,
-  parameter integer SSI_MONOFLOP_US = 20
+  parameter integer SSI_MONOFLOP_US = 20,
+  parameter integer BISS_MT_BITS    = 12,
+  parameter integer BISS_HYBRID     = 1,
+  parameter integer BISS_TIMEOUT_US = 20
 ) (
   input  wire       clk,
   input  wire       rst,
@@ -49,6 +59,8 @@ module prenc_board #(
   input  wire       ssi_clk,
   output wire       ssi_data,
   input  wire       ssi_gray,
+  input  wire       biss_ma,
+  output wire       biss_slo,
   output wire       led_valid,
   output wire       led_normal,
   output wire       led_reduced,
@@ -71,6 +83,19 @@ module prenc_board #(
       initial $display("ERROR: %m: parameter SSI_MONOFLOP_US = %0d is out of range 1..1000",
                        SSI_MONOFLOP_US);
       prenc_board_parameter_SSI_MONOFLOP_US_out_of_range_1_to_1000 u_stop ();
+    end
+    if (BISS_MT_BITS < 0 || BISS_MT_BITS > 24) begin : g_bad_biss_mt_bits
+      initial $display("ERROR: %m: parameter BISS_MT_BITS = %0d is out of range 0..24", BISS_MT_BITS);
+      prenc_board_parameter_BISS_MT_BITS_out_of_range_0_to_24 u_stop ();
+    end
+    if (BISS_HYBRID < 0 || BISS_HYBRID > 1) begin : g_bad_biss_hybrid
+      initial $display("ERROR: %m: parameter BISS_HYBRID = %0d must be 0 or 1", BISS_HYBRID);
+      prenc_board_parameter_BISS_HYBRID_must_be_0_or_1 u_stop ();
+    end
+    if (BISS_TIMEOUT_US < 1 || BISS_TIMEOUT_US > 1000) begin : g_bad_biss_timeout
+      initial $display("ERROR: %m: parameter BISS_TIMEOUT_US = %0d is out of range 1..1000",
+                       BISS_TIMEOUT_US);
+      prenc_board_parameter_BISS_TIMEOUT_US_out_of_range_1_to_1000 u_stop ();
     end
   endgenerate
 
@@ -179,6 +204,58 @@ module prenc_board #(
     .busy     (ssi_busy)
   );
 
+  // BiSS-C: multi-turn from the single-turn position and the incremental count.
+  localparam integer BISS_TURN_BITS = (BISS_MT_BITS > 0) ? BISS_MT_BITS : 1;
+  localparam integer BISS_ST_BITS   = (BISS_HYBRID == 1) ? N + 2 : N;
+  localparam integer BISS_BITS      = BISS_MT_BITS + BISS_ST_BITS;
+  wire [BISS_TURN_BITS-1:0] turns;
+  wire [BISS_BITS-1:0]      biss_data;
+  wire                      biss_busy;
+  wire                      biss_latch;
+  wire                      turns_placed;
+  wire [BISS_TURN_BITS+N+1:0] turns_full;
+
+  prenc_turns #(
+    .POS_BITS   (N + 2),
+    .TURN_BITS  (BISS_TURN_BITS)
+  ) u_turns (
+    .clk      (clk),
+    .rst      (rst),
+    .position (pos_hyb),
+    .valid    (valid),
+    .count    (incremental[N+1:0]),
+    .turns    (turns),
+    .full     (turns_full),
+    .placed   (turns_placed)
+  );
+
+  generate
+    if (BISS_MT_BITS > 0 && BISS_HYBRID == 1) begin : g_biss_mt_hyb
+      assign biss_data = {turns, pos_hyb};
+    end else if (BISS_MT_BITS > 0) begin : g_biss_mt_abs
+      assign biss_data = {turns, pos_abs};
+    end else if (BISS_HYBRID == 1) begin : g_biss_st_hyb
+      assign biss_data = pos_hyb;
+    end else begin : g_biss_st_abs
+      assign biss_data = pos_abs;
+    end
+  endgenerate
+
+  prenc_biss #(
+    .DATA_BITS (BISS_BITS),
+    .TIMEOUT   (BISS_TIMEOUT_US * (CLK_HZ / 1000000))
+  ) u_biss (
+    .clk     (clk),
+    .rst     (rst),
+    .data    (biss_data),
+    .error_n (valid),
+    .warn_n  (~((mode_now == 3'd2) | (mode_now == 3'd3))),
+    .ma      (biss_ma),
+    .slo     (biss_slo),
+    .busy    (biss_busy),
+    .latch   (biss_latch)
+  );
+
   assign led_valid       = valid;
   assign led_acquire     = (mode_now == 3'd0);
   assign led_normal      = (mode_now == 3'd1);
@@ -187,7 +264,8 @@ module prenc_board #(
   assign pos_valid       = valid;
   assign mode            = mode_now;
 
-  wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy};
+  wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy, biss_busy, biss_latch,
+                     turns_placed, turns, turns_full};
 
 endmodule
 

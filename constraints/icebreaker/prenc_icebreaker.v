@@ -6,6 +6,8 @@
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
+//   PMOD1B: P1B1 BiSS-C MA in (pulled up), P1B2 BiSS-C SLO out (through RS-422
+//           transceivers to the drive: docs/biss-c.md)
 //   UART:   RX pin 6, TX pin 9, to the on-board FTDI (second interface)
 //   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
@@ -35,6 +37,8 @@ module prenc_icebreaker #(
   input  wire P1A7,
   output wire P1A8,
   input  wire P1A9,
+  input  wire P1B1,
+  output wire P1B2,
   output wire LEDR_N,
   output wire LEDG_N,
   output wire LED1,
@@ -103,6 +107,8 @@ module prenc_icebreaker #(
     .ssi_clk         (P1A7),
     .ssi_data        (P1A8),
     .ssi_gray        (P1A9),
+    .biss_ma         (P1B1),
+    .biss_slo        (P1B2),
     .led_valid       (led_valid),
     .led_normal      (led_normal),
     .led_reduced     (led_reduced),

@@ -17,6 +17,8 @@
 ../../rtl/prenc_frame_tx.v
 ../../rtl/prenc_host_link.v
 ../../rtl/prenc_ssi.v
+../../rtl/prenc_turns.v
+../../rtl/prenc_biss.v
 ../../rtl/prenc_board.v
 ../../rtl/prenc_power_on_reset.v
 prenc_ulx3s.v

@@ -7,6 +7,8 @@
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; FIRE1 too
 //   J1 header: GP0 head1, GN0 head2, GP1 sync A, GN1 sync B            (inputs, 3.3 V)
 //              GP2 SSI clock in, GN2 SSI data out, GP3 SSI Gray select (pulled up: Gray)
+//              GP4 BiSS-C MA in (pulled up), GN4 BiSS-C SLO out (through RS-422
+//              transceivers to the drive: docs/biss-c.md)
 //   UART:      ftdi_txd (M1) in, ftdi_rxd (L4) out, the on-board FT231X
 //   LEDs:      led[0] pos_valid, led[1] ACQUIRE, led[2] NORMAL, led[3] REDUCED,
 //              led[4] INCREMENTAL
@@ -28,8 +30,8 @@ module prenc_ulx3s #(
   input  wire [1:1] btn,
   input  wire       ftdi_txd,
   output wire       ftdi_rxd,
-  input  wire [3:0] gp,
-  inout  wire [3:0] gn,
+  input  wire [4:0] gp,
+  inout  wire [4:0] gn,
   output wire [7:0] led,
   output wire       wifi_gpio0
 );
@@ -91,6 +93,7 @@ module prenc_ulx3s #(
   wire       pos_valid;
   wire [2:0] mode;
   wire       ssi_data;
+  wire       biss_slo;
 
   prenc_board #(
     .N        (N),
@@ -111,6 +114,8 @@ module prenc_ulx3s #(
     .ssi_clk         (gp[2]),
     .ssi_data        (ssi_data),
     .ssi_gray        (gp[3]),
+    .biss_ma         (gp[4]),
+    .biss_slo        (biss_slo),
     .led_valid       (led[0]),
     .led_acquire     (led[1]),
     .led_normal      (led[2]),
@@ -122,6 +127,7 @@ module prenc_ulx3s #(
 
   assign gn[2]      = ssi_data;
   assign gn[3]      = 1'bz;
+  assign gn[4]      = biss_slo;
   assign led[7:5]   = 3'b000;
   assign wifi_gpio0 = 1'b1;  // keep the ESP32 from resetting the FPGA
 
