@@ -16,9 +16,9 @@ from __future__ import annotations
 
 import cocotb
 import pytest
-from cocotb.triggers import ClockCycles, Edge, FallingEdge, ReadOnly, Timer
-from cocotb.utils import get_sim_time
+from cocotb.triggers import ClockCycles, FallingEdge, ReadOnly, Timer
 
+from biss_master import Master
 from common import PERIOD_NS, rng, start_clock_and_reset
 from prenc import biss
 from runner import SIMULATORS, run
@@ -37,44 +37,6 @@ def crc_table_entries() -> dict[int, int]:
              0x14, 0x17, 0x12, 0x11, 0x30, 0x33, 0x36, 0x35, 0x3C, 0x3F, 0x3A, 0x39,
              0x28, 0x2B, 0x2E, 0x2D, 0x24, 0x27, 0x22, 0x21, 0x23, 0x20, 0x25, 0x26]
     return dict(enumerate(table))
-
-
-class Master:
-    """A BiSS-C master: MA at `rate_hz`, SLO recorded as (time_ns, level)."""
-
-    def __init__(self, dut, rate_hz: float):
-        self.dut = dut
-        self.half_ps = round(CLK_HZ / rate_hz / 2 * PERIOD_NS * 1000)
-        self.period_ns = 2 * self.half_ps / 1000
-        self.edges: list[tuple[float, int]] = []
-        dut.ma.value = 1
-        cocotb.start_soon(self._watch())
-
-    async def _watch(self) -> None:
-        while True:
-            await Edge(self.dut.slo)
-            self.edges.append((get_sim_time("ns"), int(self.dut.slo.value)))
-
-    async def pulses(self, count: int, on_start=None) -> list[float]:
-        """`count` MA pulses (falling, then rising edge); MA is left high. Returns the
-        rising edges' times."""
-        rises = []
-        for k in range(count):
-            self.dut.ma.value = 0
-            if k == 0 and on_start:
-                on_start()
-            await Timer(self.half_ps, unit="ps")
-            self.dut.ma.value = 1
-            rises.append(get_sim_time("ns"))
-            await Timer(self.half_ps, unit="ps")
-        return rises
-
-    async def read(self, on_start=None) -> tuple[biss.Reading, float]:
-        self.edges.clear()
-        count = len(biss.frame_bits(0, 0, MT_BITS, ST_BITS, False, False))
-        rises = await self.pulses(biss.clock_pulses(MT_BITS, ST_BITS), on_start)
-        bits, delay = biss.sample(rises, list(self.edges), self.period_ns, count)
-        return biss.decode(bits, MT_BITS, ST_BITS), delay
 
 
 async def slo_now(dut) -> int:
@@ -113,7 +75,7 @@ async def frames_at_every_rate(dut):
     await start(dut)
     reads = 0
     for rate in RATES_HZ:
-        master = Master(dut, rate)
+        master = Master(dut, rate, CLK_HZ, timeout_clocks=TIMEOUT)
         for _ in range(8):
             turns, position = r.randrange(1 << MT_BITS), r.randrange(1 << ST_BITS)
             error, warning = bool(r.randrange(2)), bool(r.randrange(2))
@@ -124,7 +86,7 @@ async def frames_at_every_rate(dut):
                 # through the synchronizer): the frame must carry the old ones.
                 cocotb.start_soon(_later(dut, 4, r))
 
-            reading, delay = await master.read(change_after_latch)
+            reading, delay = await master.read(MT_BITS, ST_BITS, change_after_latch)
             assert reading == biss.Reading(turns, position, error, warning, True), (rate, reading)
             assert 2 * PERIOD_NS <= delay <= 5 * PERIOD_NS, f"line delay {delay} ns at {rate} Hz"
             # After the stop pulse SLO is low (timeout) until TIMEOUT clocks after the
@@ -148,7 +110,7 @@ async def good_frame_after(dut, master: Master, what: str) -> None:
     await ClockCycles(dut.clk, TIMEOUT + 8)
     assert await slo_now(dut) == 1, f"{what}: the slave is not idle after the timeout"
     put(dut, 0xABC, 0x123, False, False)
-    reading, _ = await master.read()
+    reading, _ = await master.read(MT_BITS, ST_BITS)
     assert reading == biss.Reading(0xABC, 0x123, False, False, True), (what, reading)
     await ClockCycles(dut.clk, TIMEOUT + 8)
 
@@ -157,7 +119,7 @@ async def good_frame_after(dut, master: Master, what: str) -> None:
 async def cut_short_stopped_or_garbled_clocks_never_lock_the_slave_up(dut):
     r = rng()
     await start(dut)
-    master = Master(dut, 2_500_000)
+    master = Master(dut, 2_500_000, CLK_HZ, timeout_clocks=TIMEOUT)
     # A frame cut short after a few data bits: MA stays high.
     await master.pulses(9)
     await good_frame_after(dut, master, "frame cut short")

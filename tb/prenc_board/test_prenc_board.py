@@ -20,32 +20,27 @@ and not stop the log), `monitor`, and `plot` from the log.
 from __future__ import annotations
 
 import csv
-import fcntl
 import json
 import os
 import subprocess
 import sys
 import time
-import tty
 
 import cocotb
 import numpy as np
-from cocotb.triggers import RisingEdge, Timer
-from cocotb.utils import get_sim_time
+from cocotb.triggers import Timer
 
+from board_harness import PINS, Bridge, drive_encoder
 from common import PERIOD_NS, start_clock_and_reset
 from prenc import protocol
-from prenc.encoder import Disc, VirtualEncoder
+from prenc.encoder import Disc
 from prenc.scenarios import core_latency
 from runner import REPO, SIM_BUILD, rom_file, run
-from uart import UartSink, UartSource
 
 TOPLEVEL = "prenc_board"
 N, FILTER, CLK_HZ, BAUD = 10, 2, 24_000_000, 3_000_000
 SLOT_CLOCKS = 300          # the disc's speed: one slot per 300 clocks (4,688 rpm at 24 MHz)
 START_CLOCK = 2_000        # the disc rests until here
-CHUNK = 200_000            # encoder signals are generated this many clocks at a time
-PINS = ("head1", "head2", "sync_a", "sync_b")
 
 
 def theta_at(clocks: np.ndarray) -> np.ndarray:
@@ -71,76 +66,6 @@ class Truth:
         q = np.floor(4 * theta_at(self.clocks(snapshot_clock))).astype(np.int64)
         q0 = int(np.floor(4 * theta_at(np.array([0])))[0])
         return set((q - q0).tolist())
-
-
-class Bridge:
-    """Moves bytes between the pty's master side and the board's UART pins."""
-
-    def __init__(self, dut):
-        self.dut = dut
-        self.master, self.slave = os.openpty()
-        tty.setraw(self.master)
-        fcntl.fcntl(self.master, fcntl.F_SETFL, fcntl.fcntl(self.master, fcntl.F_GETFL) | os.O_NONBLOCK)
-        self.port = os.ttyname(self.slave)
-        self.bit_clocks = round(CLK_HZ / BAUD)
-        self.source = UartSource(dut.uart_rx, self.bit_clocks)
-        self.sink = UartSink(dut.uart_tx, self.bit_clocks)
-        self.snapshots: list[int] = []
-        self.corrupt_byte: int | None = None  # index of a board byte to corrupt on the way
-        self.sent = 0
-        cocotb.start_soon(self._to_board())
-        cocotb.start_soon(self._to_host())
-        cocotb.start_soon(self._snapshots())
-
-    async def _to_board(self) -> None:
-        while True:
-            try:
-                data = os.read(self.master, 256)
-            except (BlockingIOError, OSError):
-                data = b""
-            if data:
-                await self.source.send(data)
-            else:
-                await Timer(10 * self.bit_clocks * PERIOD_NS, unit="ns")
-
-    async def _to_host(self) -> None:
-        while True:
-            _, byte = await self.sink.queue.get()
-            if self.sent == self.corrupt_byte:
-                byte ^= 0x10
-            self.sent += 1
-            os.write(self.master, bytes([byte]))
-
-    async def _snapshots(self) -> None:
-        while True:
-            await RisingEdge(self.dut.clk)
-            if int(self.dut.u_link.snapshot.value):
-                self.snapshots.append(round(get_sim_time("ns") / PERIOD_NS))
-
-    def snapshot_of(self, seq: int) -> int:
-        """The clock of the latest snapshot whose index is seq (mod 256)."""
-        for index in range(len(self.snapshots) - 1, -1, -1):
-            if index % 256 == seq:
-                return self.snapshots[index]
-        raise AssertionError(f"no snapshot for SEQ {seq}")
-
-
-async def drive_encoder(dut) -> None:
-    """The virtual encoder's pins, generated CHUNK clocks at a time, for ever."""
-    enc = VirtualEncoder()
-    start = 0
-    while True:
-        run_ = enc.run(theta_at(np.arange(start, start + CHUNK)))
-        now = start
-        for clock, *values in run_.events():
-            at = start + clock
-            if at > now:
-                await Timer((at - now) * PERIOD_NS, unit="ns")
-                now = at
-            for pin, value in zip(PINS, values):
-                getattr(dut, pin).value = value
-        await Timer((start + CHUNK - now) * PERIOD_NS, unit="ns")
-        start += CHUNK
 
 
 async def host(bridge: Bridge, *args: str, timeout_s: float = 120.0) -> subprocess.CompletedProcess:
@@ -189,10 +114,11 @@ async def prenc_host_reads_the_true_position_through_a_pty(dut):
         getattr(dut, pin).value = 0
     dut.ssi_clk.value = 1
     dut.ssi_gray.value = 1
+    dut.biss_ma.value = 1
     dut.uart_rx.value = 1
     await start_clock_and_reset(dut, 6)
-    cocotb.start_soon(drive_encoder(dut))
-    bridge = Bridge(dut)
+    cocotb.start_soon(drive_encoder(dut, theta_at))
+    bridge = Bridge(dut, round(CLK_HZ / BAUD))
     truth = Truth()
     # Start-up: 3N slots of movement before the position is valid.
     await Timer((START_CLOCK + 40 * SLOT_CLOCKS) * PERIOD_NS, unit="ns")

@@ -1,0 +1,120 @@
+# SPDX-License-Identifier: Apache-2.0
+"""prenc_board's BiSS-C output, read by a BiSS-C master while the disc turns.
+
+The disc (N = 6, 64 slots) rests, turns 3.5 times CW, then 6 times CCW, so the
+multi-turn count goes up across the zero crossing and down below turn 0; head 2
+sticks at 0 for the last four turns, which puts the core in a reduced mode (nW). A master
+(prenc.biss, written from the protocol) reads frame after frame at 4 MHz and 1 MHz
+(6 and 24 clocks of the 24 MHz design clock). Every frame must carry, with a good
+CRC, what the board had on the clock before its latch (the frame's first falling
+edge): turns, pos_hyb, nE = pos_valid, nW = not a reduced mode. Every valid frame
+must also match the truth of the virtual encoder: the position within the core's
+latency, and the turns counted from the turn of the first valid position.
+"""
+
+from __future__ import annotations
+
+import cocotb
+import numpy as np
+from cocotb.triggers import ReadOnly, RisingEdge, Timer
+from cocotb.utils import get_sim_time
+
+from biss_master import Master
+from board_harness import PINS, drive_encoder
+from common import PERIOD_NS, start_clock_and_reset
+from prenc import biss
+from prenc.encoder import Disc
+from prenc.faults import DeadHead
+from prenc.scenarios import core_latency
+from runner import rom_file, run
+
+TOPLEVEL = "prenc_board"
+N, FILTER, CLK_HZ = 6, 2, 24_000_000
+MT_BITS, ST_BITS = 12, N + 2
+TURN = 1 << N
+SLOT_CLOCKS = 24
+START_CLOCK = 1_000
+THETA0 = 10.4
+CW_CLOCKS = int(3.5 * TURN * SLOT_CLOCKS)
+CCW_CLOCKS = 6 * TURN * SLOT_CLOCKS
+RATES_HZ = (4_000_000, 1_000_000)
+
+
+def theta_at(clocks: np.ndarray) -> np.ndarray:
+    c = np.asarray(clocks, dtype=np.float64) - START_CLOCK
+    cw = np.clip(c, 0, CW_CLOCKS)
+    ccw = np.clip(c - CW_CLOCKS, 0, CCW_CLOCKS)
+    return THETA0 + (cw - ccw) / SLOT_CLOCKS
+
+
+class Board:
+    """What the board had on each clock, and the clocks of the BiSS latches."""
+
+    def __init__(self, dut):
+        self.dut = dut
+        self.latches: list[tuple[int, dict]] = []
+        self.first_valid: int | None = None
+        cocotb.start_soon(self._watch())
+
+    async def _watch(self) -> None:
+        dut, before = self.dut, None
+        while True:
+            await RisingEdge(dut.clk)
+            await ReadOnly()
+            clock = round(get_sim_time("ns") / PERIOD_NS)
+            if int(dut.u_biss.latch.value) and before is not None:
+                self.latches.append((clock - 1, before))
+            valid = int(dut.u_core.pos_valid.value)
+            if valid and self.first_valid is None:
+                self.first_valid = clock
+            before = {"turns": int(dut.u_turns.turns.value), "position": int(dut.u_core.pos_hyb.value),
+                      "valid": valid, "mode": int(dut.u_core.mode.value)}
+
+
+@cocotb.test()
+async def biss_frames_carry_the_core_and_the_turns_of_the_disc(dut):
+    for pin in PINS:
+        getattr(dut, pin).value = 0
+    dut.ssi_clk.value = 1
+    dut.ssi_gray.value = 1
+    dut.biss_ma.value = 1
+    dut.uart_rx.value = 1
+    await start_clock_and_reset(dut, 6)
+    dead = DeadHead(head=2, mode="stuck0", start_clock=START_CLOCK + CW_CLOCKS + CCW_CLOCKS // 3)
+    cocotb.start_soon(drive_encoder(dut, theta_at, lambda chunk: [dead] if chunk == 0 else [], Disc(N)))
+    board = Board(dut)
+    masters = [Master(dut, rate, CLK_HZ, ma="biss_ma", slo="biss_slo") for rate in RATES_HZ]
+    disc, latency = Disc(N), core_latency(FILTER)
+    frames, valid_frames, warned, turns_seen = 0, 0, 0, set()
+    end = START_CLOCK + CW_CLOCKS + CCW_CLOCKS
+    while round(get_sim_time("ns") / PERIOD_NS) < end:
+        master = masters[frames % len(masters)]
+        reading, _ = await master.read(mt_bits=MT_BITS, st_bits=ST_BITS)
+        clock, had = board.latches[-1]
+        assert reading.crc_ok, (clock, reading)
+        assert reading == biss.Reading(had["turns"], had["position"], not had["valid"],
+                                       had["mode"] in (2, 3), True), (clock, reading, had)
+        if had["valid"]:
+            truth = theta_at(np.arange(clock - latency - FILTER - 2, clock - latency + FILTER + 3))
+            hybrid = set(disc.hybrid(truth).tolist())
+            assert reading.position in hybrid, (clock, reading, sorted(hybrid))
+            turn0 = int(np.floor(theta_at(np.array([board.first_valid - latency]))[0] / TURN))
+            turns = {int(np.floor(t / TURN)) - turn0 for t in truth}
+            assert reading.turns in {t % (1 << MT_BITS) for t in turns}, (clock, reading, turns)
+            turns_seen.add(reading.turns)
+            valid_frames += 1
+            warned += reading.warning
+        frames += 1
+        await Timer(master.timeout_ns(), unit="ns")
+    dut._log.info("%d BiSS-C frames, %d valid, %d of them with the warning; turns seen %s",
+                  frames, valid_frames, warned, sorted(turns_seen))
+    assert valid_frames >= frames - 3, (frames, valid_frames)
+    assert warned >= 3 and valid_frames - warned >= 5, (valid_frames, warned)
+    assert {1, 2, 3} <= turns_seen, sorted(turns_seen)
+    assert {(1 << MT_BITS) - 1, (1 << MT_BITS) - 2} <= turns_seen, sorted(turns_seen)  # turns -1, -2
+
+
+def test_prenc_board_biss():
+    run(__file__, TOPLEVEL, "verilator",
+        parameters={"N": N, "TAPS": sum(1 << (t - 1) for t in Disc(N).taps), "FILTER": FILTER, "ROM_FILE": rom_file(N), "CLK_HZ": CLK_HZ,
+                    "BAUD": 3_000_000, "BISS_MT_BITS": MT_BITS, "BISS_HYBRID": 1})
