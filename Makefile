@@ -8,6 +8,9 @@
 #   make rom     the default conversion ROM into build/rom/
 #   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200]
 #                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/
+#   make board-sim [ARGS="--profile reversals --misreads 0.01"]
+#                the virtual board: prenc_board on Verilator with its UART on a pty,
+#                for `prenc host` without a board (scripts/board_sim.py --help)
 #
 # Set-up is automatic: a virtual environment with pinned versions (requirements.txt)
 # and the Debian packages the simulators need, installed only when missing.
@@ -29,7 +32,7 @@ WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT
 BOARD ?= icebreaker
 BITS  ?= 10
 
-.PHONY: all demo test bench lint rom synth sysdeps venv clean distclean
+.PHONY: all demo test bench lint rom synth board-sim sysdeps venv clean distclean
 
 all: test
 
@@ -71,6 +74,9 @@ lint: $(STAMP)
 
 synth: $(STAMP)
 	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD))
+
+board-sim: $(STAMP) sysdeps
+	@$(WITH_VERILATOR) $(PY) scripts/board_sim.py $(ARGS)
 
 rom: $(STAMP)
 	mkdir -p build/rom

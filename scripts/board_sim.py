@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""`make board-sim`: the virtual board, for trying `prenc host` without a board.
+
+    python scripts/board_sim.py [--profile constant|reversals|sine] [--rpm 600]
+                                [--misreads 0.01] [--dead-head 2] [--missed-states 3]
+                                [--seconds 0] [--clock-mhz 24 --baud 3000000]
+
+prenc_board runs on Verilator (tb/prenc_board/virtual_board.py), driven by the
+virtual encoder; its UART is a pseudo-terminal whose name this prints. In another
+terminal:
+
+    prenc host read    --port /dev/pts/N --kind hybrid
+    prenc host monitor --port /dev/pts/N --rate 1000
+    prenc host log     --port /dev/pts/N --out log.csv --rate 1000 --count 200
+    prenc host plot    log.csv
+
+The simulation is some hundred times slower than the board (it prints how much), so
+board time runs slow: ask for streams at a high rate (--rate 1000 is one answer per
+millisecond of board time). A lower clock (--clock-mhz 4 --baud 1000000) runs six
+times closer to real time. Stop it with Ctrl-C, or give --seconds of board time.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(REPO / "tb"), str(REPO / "sim")]
+
+from prenc.profiles import PROFILES  # noqa: E402
+from prenc.encoder import Disc  # noqa: E402
+from runner import rom_file, run  # noqa: E402
+
+
+def parse(argv=None) -> argparse.Namespace:
+    p = argparse.ArgumentParser(prog="board_sim.py", description=__doc__.split("\n")[0])
+    p.add_argument("--bits", type=int, default=10, help="N, the disc's code length (default 10)")
+    p.add_argument("--profile", choices=PROFILES, default="constant", help="speed profile (default constant)")
+    p.add_argument("--rpm", type=float, default=600.0, help="speed, or peak speed, in rpm (default 600)")
+    p.add_argument("--misreads", type=float, default=0.0, help="each head's misread rate per slot pass")
+    p.add_argument("--dead-head", type=int, choices=(1, 2), help="a head stuck at 0 from the start")
+    p.add_argument("--missed-states", type=int, default=0,
+                   help="missed quadrature states per 200,000 clocks of encoder signal")
+    p.add_argument("--seed", type=int, default=1, help="seed of the random faults (default 1)")
+    p.add_argument("--seconds", type=float, default=0.0, help="board time to run (default 0: until stopped)")
+    p.add_argument("--clock-mhz", type=int, default=24, help="design clock in MHz (default 24, the iCEBreaker's)")
+    p.add_argument("--baud", type=int, default=3_000_000, help="UART baud rate (default 3000000)")
+    p.add_argument("--filter", type=int, default=2, help="glitch filter length in clocks (default 2)")
+    p.add_argument("--port-file", help="write the pty's name to this file")
+    args = p.parse_args(argv)
+    if args.clock_mhz * 1_000_000 < 4 * args.baud:
+        p.error(f"--baud {args.baud} needs at least 4 clocks per bit: --clock-mhz >= {4 * args.baud / 1e6:g}")
+    if not 0.0 <= args.misreads <= 1.0:
+        p.error(f"--misreads {args.misreads} must be in 0..1")
+    if args.rpm == 0:
+        p.error("--rpm must not be 0: the reader needs the disc to move to find its position")
+    return args
+
+
+def main(argv=None) -> int:
+    args = parse(argv)
+    n = args.bits
+    cfg = {"n": n, "clk_hz": args.clock_mhz * 1_000_000, "baud": args.baud, "profile": args.profile,
+           "rpm": args.rpm, "misreads": args.misreads, "dead_head": args.dead_head,
+           "missed_states": args.missed_states, "seed": args.seed, "seconds": args.seconds,
+           "port_file": str(Path(args.port_file).resolve()) if args.port_file else None}
+    taps = sum(1 << (t - 1) for t in Disc(n).taps)
+    run(str(REPO / "tb" / "prenc_board" / "virtual_board.py"), "prenc_board", "verilator",
+        parameters={"N": n, "TAPS": taps, "FILTER": args.filter, "ROM_FILE": rom_file(n),
+                    "CLK_HZ": cfg["clk_hz"], "BAUD": args.baud},
+        extra_env={"PRENC_BOARD_SIM": json.dumps(cfg)})
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
