@@ -85,7 +85,8 @@ module prenc_board #(
       prenc_board_parameter_SSI_MONOFLOP_US_out_of_range_1_to_1000 u_stop ();
     end
     if (BISS_MT_BITS < 0 || BISS_MT_BITS > 24) begin : g_bad_biss_mt_bits
-      initial $display("ERROR: %m: parameter BISS_MT_BITS = %0d is out of range 0..24", BISS_MT_BITS);
+      initial $display("ERROR: %m: parameter BISS_MT_BITS = %0d is out of range 0..24",
+                       BISS_MT_BITS);
       prenc_board_parameter_BISS_MT_BITS_out_of_range_0_to_24 u_stop ();
     end
     if (BISS_HYBRID < 0 || BISS_HYBRID > 1) begin : g_bad_biss_hybrid

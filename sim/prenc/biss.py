@@ -131,3 +131,42 @@ def sample(rises: list[float], slo_edges: list[tuple[float, int]], period: float
         raise FrameError(f"MA has {len(rises)} rising edges; the frame needs {cause + count + 1}")
     bits = [level_at(rises[cause + 1 + i] + delay + period / 2) for i in range(count)]
     return bits, delay
+
+
+def timing_diagram(turns: int, position: int, mt_bits: int, st_bits: int,
+                   error: bool = False, warning: bool = False) -> str:
+    """A frame as text (docs/biss-c.md): MA, the rising edges' numbers, SLO and the
+    bits' names. SLO is drawn changing just after each rising edge; X marks a bit
+    boundary without a change of level."""
+    bits = frame_bits(turns, position, mt_bits, st_bits, error, warning)
+    names = (["CDS"] + [f"M{mt_bits - 1 - i}" for i in range(mt_bits)]
+             + [f"S{st_bits - 1 - i}" for i in range(st_bits)] + ["nE", "nW"]
+             + [f"C{CRC_BITS - 1 - i}" for i in range(CRC_BITS)])
+    pulses = clock_pulses(mt_bits, st_bits)
+    period, lead, tail = 5, 4, 14
+    width = lead + period * pulses + tail
+    after = {1: (1, ""), 2: (0, "Ack"), 3: (1, "St"), pulses: (0, "timeout")}
+    after.update({4 + i: (b, names[i]) for i, b in enumerate(bits)})
+    ma, rise, slo, label = ["‾"] * width, [" "] * width, [], [" "] * width
+    changes = {}
+    for k in range(1, pulses + 1):
+        fall = lead + period * (k - 1)
+        ma[fall:fall + 4] = ["\\", "_", "_", "/"]
+        rise[fall + 3:fall + 3 + len(str(k))] = list(str(k))
+        changes[fall + 4] = after[k][0]
+        for j, ch in enumerate(after[k][1]):
+            label[fall + 4 + j] = ch
+    level, first_bit = 1, lead + period * 3 + 4
+    for col in range(width):
+        if col in changes:
+            new = changes[col]
+            slo.append("X" if new == level and col >= first_bit else
+                       "\\" if new < level else "/" if new > level else ("‾" if level else "_"))
+            level = new
+        elif col == width - 4:
+            slo.append("/" if level == 0 else "‾")
+            level = 1
+        else:
+            slo.append("‾" if level else "_")
+    rows = [("MA  ", ma), ("rise", rise), ("SLO ", slo), ("    ", label)]
+    return "\n".join((name + " " + "".join(row)).rstrip() for name, row in rows)

@@ -78,3 +78,19 @@ def test_decode_rejects_layouts_that_are_not_the_protocol():
         protocol.decode(protocol.Frame(0x80, bytes(7)))  # ABS with 1 data byte
     with pytest.raises(protocol.ProtocolError):
         protocol.decode(protocol.Frame(0x90, bytes(8)))  # no such kind
+
+
+def test_biss_frame_layout_and_the_documented_diagram():
+    """prenc.biss: the frame's layout (CDS, data, nE, nW, CRC inverted), its decoding,
+    and the timing diagram of docs/biss-c.md, which must be the protocol's."""
+    from pathlib import Path
+
+    from prenc import biss
+
+    bits = biss.frame_bits(0b10, 0b0110, 2, 4, error=True, warning=False)
+    assert bits[:9] == [0, 1, 0, 0, 1, 1, 0, 0, 1]  # CDS, turns, position, nE = 0, nW = 1
+    assert biss.from_bits(1 - b for b in bits[9:]) == biss.crc6(bits[1:9])
+    assert biss.decode(bits, 2, 4) == biss.Reading(2, 6, True, False, True)
+    assert biss.clock_pulses(12, 12) == 37
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "biss-c.md").read_text()
+    assert biss.timing_diagram(1, 0b1011, 2, 4) in doc

