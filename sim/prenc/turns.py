@@ -11,7 +11,9 @@ count brought it.
 
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass
+from typing import Iterator
 
 
 @dataclass
@@ -55,3 +57,22 @@ class Turns:
         else:
             self.full = (self.full + self._signed(count - self.count_prev)) & mask
         self.count_prev = count
+
+
+def random_walk(seed: int, clocks: int, pos_bits: int) -> Iterator[tuple[int, int, bool]]:
+    """A stimulus for the tests: each clock's true unwrapped position in quarters (at
+    most one step a clock, reversing now and then), the incremental count (which
+    misses the two quarters of a missed quadrature state, one clock in a thousand),
+    and the valid flag (lost and found in stretches)."""
+    r = random.Random(seed)
+    q, count, valid, way = 3 * (1 << pos_bits) + 5, 0, False, 1
+    for t in range(clocks):
+        if r.random() < 0.002:
+            way = -way
+        jump = 2 * way if r.random() < 0.001 else 0
+        step = way if (r.random() < 0.7 and not jump) else 0
+        q += step + jump
+        count += step
+        if t > 50 and r.random() < 0.0015:
+            valid = not valid
+        yield q, count, valid

@@ -4,29 +4,9 @@ stretches without a valid position, and after missed quadrature states."""
 
 from __future__ import annotations
 
-import random
-
 import pytest
 
-from prenc.turns import Turns
-
-
-def walk(seed: int, clocks: int, pos_bits: int):
-    """A true unwrapped position in quarters (one step per clock at most), the
-    incremental count (which misses the two quarters of a missed state), and the
-    valid flag (off in stretches)."""
-    r = random.Random(seed)
-    q, count, valid, way = 5 * (1 << pos_bits) + 17, 0, False, 1
-    for t in range(clocks):
-        if r.random() < 0.002:
-            way = -way
-        jump = 2 * way if r.random() < 0.001 else 0
-        step = way if (r.random() < 0.7 and not jump) else 0
-        q += step + jump
-        count += step
-        if t > 50 and r.random() < 0.0015:
-            valid = not valid
-        yield q, count, valid
+from prenc.turns import Turns, random_walk
 
 
 @pytest.mark.parametrize("seed", range(4))
@@ -37,7 +17,7 @@ def test_turns_follow_the_truth(seed):
     origin = None
     crossings = 0
     last_turn = None
-    for q, count, valid in walk(seed, 60_000, pos_bits):
+    for q, count, valid in random_walk(seed, 60_000, pos_bits):
         m.clock(q % (1 << pos_bits), valid, count)
         if valid and origin is None:
             origin = q >> pos_bits

@@ -23,12 +23,24 @@ import numpy as np
 from cocotb.triggers import RisingEdge, Timer
 from cocotb.utils import get_sim_time
 
-from common import PERIOD_NS
+from common import PERIOD_NS, start_clock_and_reset
 from prenc.encoder import Disc, VirtualEncoder
 from uart import UartSink, UartSource
 
 PINS = ("head1", "head2", "sync_a", "sync_b")
 CHUNK = 200_000  # encoder signals are generated this many clocks at a time
+
+
+async def start_board(dut, reset_clocks: int = 6) -> None:
+    """Idle levels on every input of prenc_board (encoder pins 0, SSI and BiSS-C
+    clocks and the UART line high, Gray selected), then clock and reset."""
+    for pin in PINS:
+        getattr(dut, pin).value = 0
+    dut.ssi_clk.value = 1
+    dut.ssi_gray.value = 1
+    dut.biss_ma.value = 1
+    dut.uart_rx.value = 1
+    await start_clock_and_reset(dut, reset_clocks)
 
 
 class Bridge:

@@ -30,8 +30,8 @@ import cocotb
 import numpy as np
 from cocotb.triggers import Timer
 
-from board_harness import PINS, Bridge, drive_encoder
-from common import PERIOD_NS, start_clock_and_reset
+from board_harness import Bridge, drive_encoder, start_board
+from common import PERIOD_NS
 from prenc import protocol
 from prenc.encoder import Disc
 from prenc.scenarios import core_latency
@@ -110,13 +110,7 @@ def check_answer(record: dict, truth: Truth, bridge: Bridge) -> None:
 
 @cocotb.test()
 async def prenc_host_reads_the_true_position_through_a_pty(dut):
-    for pin in PINS:
-        getattr(dut, pin).value = 0
-    dut.ssi_clk.value = 1
-    dut.ssi_gray.value = 1
-    dut.biss_ma.value = 1
-    dut.uart_rx.value = 1
-    await start_clock_and_reset(dut, 6)
+    await start_board(dut)
     cocotb.start_soon(drive_encoder(dut, theta_at))
     bridge = Bridge(dut, round(CLK_HZ / BAUD))
     truth = Truth()

@@ -20,8 +20,8 @@ from cocotb.triggers import ReadOnly, RisingEdge, Timer
 from cocotb.utils import get_sim_time
 
 from biss_master import Master
-from board_harness import PINS, drive_encoder
-from common import PERIOD_NS, start_clock_and_reset
+from board_harness import drive_encoder, start_board
+from common import PERIOD_NS
 from prenc import biss
 from prenc.encoder import Disc
 from prenc.faults import DeadHead
@@ -73,13 +73,7 @@ class Board:
 
 @cocotb.test()
 async def biss_frames_carry_the_core_and_the_turns_of_the_disc(dut):
-    for pin in PINS:
-        getattr(dut, pin).value = 0
-    dut.ssi_clk.value = 1
-    dut.ssi_gray.value = 1
-    dut.biss_ma.value = 1
-    dut.uart_rx.value = 1
-    await start_clock_and_reset(dut, 6)
+    await start_board(dut)
     dead = DeadHead(head=2, mode="stuck0", start_clock=START_CLOCK + CW_CLOCKS + CCW_CLOCKS // 3)
     cocotb.start_soon(drive_encoder(dut, theta_at, lambda chunk: [dead] if chunk == 0 else [], Disc(N)))
     board = Board(dut)

@@ -28,8 +28,8 @@ import cocotb
 from cocotb.triggers import Timer
 from cocotb.utils import get_sim_time
 
-from board_harness import PINS, Bridge, drive_encoder
-from common import PERIOD_NS, start_clock_and_reset
+from board_harness import Bridge, drive_encoder, start_board
+from common import PERIOD_NS
 from prenc.encoder import Disc
 from prenc.faults import DeadHead, MissedQuadratureState, RandomMisreads
 from prenc.profiles import profile
@@ -58,13 +58,7 @@ def faults_of(cfg: dict):
 async def virtual_board(dut):
     cfg = json.loads(os.environ["PRENC_BOARD_SIM"])
     n, clk_hz, baud = int(cfg["n"]), float(cfg["clk_hz"]), int(cfg["baud"])
-    for pin in PINS:
-        getattr(dut, pin).value = 0
-    dut.ssi_clk.value = 1
-    dut.ssi_gray.value = 1
-    dut.biss_ma.value = 1
-    dut.uart_rx.value = 1
-    await start_clock_and_reset(dut, 6)
+    await start_board(dut)
     theta_at = profile(cfg["profile"], float(cfg["rpm"]), n, clk_hz)
     cocotb.start_soon(drive_encoder(dut, theta_at, faults_of(cfg), Disc(n)))
     bridge = Bridge(dut, round(clk_hz / baud), snapshots=False)

@@ -9,24 +9,10 @@ import cocotb
 import pytest
 
 from common import clock_and_check, rng, start_clock_and_reset
-from prenc.turns import Turns
+from prenc.turns import Turns, random_walk
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_turns"
-
-
-def walk(r, clocks: int, pos_bits: int):
-    q, count, valid, way = 3 * (1 << pos_bits) + 5, 0, False, 1
-    for t in range(clocks):
-        if r.random() < 0.002:
-            way = -way
-        jump = 2 * way if r.random() < 0.001 else 0
-        step = way if (r.random() < 0.7 and not jump) else 0
-        q += step + jump
-        count += step
-        if t > 50 and r.random() < 0.0015:
-            valid = not valid
-        yield q, count, valid
 
 
 @cocotb.test()
@@ -37,7 +23,7 @@ async def turns_follow_the_model_and_the_truth(dut):
     await start_clock_and_reset(dut, 3, {"position": 0, "valid": 0, "count": 0})
     origin, crossings, last = None, 0, None
     mask = (1 << pos_bits) - 1
-    for t, (q, count, valid) in enumerate(walk(rng(), 40_000, pos_bits)):
+    for t, (q, count, valid) in enumerate(random_walk(rng().randrange(1 << 30), 40_000, pos_bits)):
         model.clock(q & mask, valid, count)
         await clock_and_check(dut, {"position": q & mask, "valid": int(valid), "count": count & mask},
                               {"full": model.full, "turns": model.turns, "placed": int(model.placed)},
