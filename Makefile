@@ -8,6 +8,8 @@
 #   make rom     the default conversion ROM into build/rom/
 #   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200]
 #                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/
+#   make formal  every formal proof of formal/*.sby (SymbiYosys, Yices; also in make test)
+#   make mutate  mutants of each proven block, and how many the proofs kill
 #   make board-sim [ARGS="--profile reversals --misreads 0.01"]
 #                the virtual board: prenc_board on Verilator with its UART on a pty,
 #                for `prenc host` without a board (scripts/board_sim.py --help)
@@ -32,7 +34,7 @@ WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT
 BOARD ?= icebreaker
 BITS  ?= 10
 
-.PHONY: all demo test bench lint rom synth board-sim sysdeps venv clean distclean
+.PHONY: all demo test bench lint rom synth board-sim formal mutate sysdeps venv clean distclean
 
 all: test
 
@@ -74,6 +76,12 @@ lint: $(STAMP)
 
 synth: $(STAMP)
 	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD))
+
+formal: $(STAMP)
+	@$(PY) -m pytest -q -n $(JOBS) tb/formal
+
+mutate: $(STAMP)
+	@$(PY) scripts/mutate.py --jobs $(JOBS) $(ARGS)
 
 board-sim: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/board_sim.py $(ARGS)

@@ -157,6 +157,63 @@ module prenc_biss #(
   assign busy  = active;
   assign latch = latch_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_biss.sby), on the registers after each clock.
+  reg            f_past_valid = 1'b0;
+  reg            f_rst_prev;
+  reg            f_active_prev;
+  reg [BITS-1:0] f_frame;   // data, nE, nW latched at the frame's first falling edge
+  reg [5:0]      f_crc;     // their CRC-6, computed here bit by bit from the frame
+  reg [5:0]      f_crc_sent;  // the CRC of the bits sent so far
+  reg [23:0]     f_still;   // clocks since MA last moved (saturating)
+  integer        f_i;
+  always @(*) begin
+    f_crc      = 6'd0;
+    f_crc_sent = 6'd0;
+    for (f_i = BITS - 1; f_i >= 0; f_i = f_i - 1) begin
+      f_crc = {f_crc[4:0], 1'b0} ^ ((f_crc[5] ^ f_frame[f_i]) ? 6'b000011 : 6'b000000);
+      if (BITS - f_i <= rises - CDS) f_crc_sent = f_crc;
+    end
+  end
+  always @(posedge clk) begin
+    f_past_valid  <= 1'b1;
+    f_rst_prev    <= rst;
+    f_active_prev <= active;
+    if (!active && fall) f_frame <= {data, error_n, warn_n};
+    f_still <= (rise || fall) ? 24'd0 : (f_still == 24'hFFFFFF) ? f_still : f_still + 24'd1;
+    if (rst) f_still <= 24'd0;
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      if (!active) assert (slo);
+      // After rising edge k of a frame: 1 high, 2 Ack low, 3 Start high, 4 CDS low,
+      // then the frame MSB first, then the CRC inverted, then low.
+      if (active && rises == 8'd1) assert (slo);
+      if (active && rises == ACK) assert (!slo);
+      if (active && rises == START) assert (slo);
+      if (active && rises == CDS) assert (!slo);
+      if (active && rises > CDS && rises <= LAST_D) assert (slo == f_frame[LAST_D - rises]);
+      if (active && rises > LAST_D && rises <= LAST_C) assert (slo == ~f_crc[LAST_C - rises]);
+      if (active && rises > LAST_C) assert (!slo);
+      // The latched frame holds for the whole frame: the shift register is its rest,
+      // and the CRC register the CRC of what has been sent.
+      if (active && rises <= CDS) assert (shift == f_frame && crc == 6'd0);
+      if (active && rises > CDS && rises <= LAST_D)
+        assert (shift == (f_frame << (rises - CDS)) && crc == f_crc_sent);
+      if (active && rises > LAST_D && rises <= LAST_C) assert (crc == (f_crc << (rises - LAST_D)));
+      // The timeout: a frame ends exactly when MA has not moved for TIMEOUT clocks.
+      if (f_active_prev && !active) assert (f_still == TIMEOUT);
+      if (active) assert (timer == ((f_still >= TIMEOUT - 1) ? 24'd0 : TO - f_still));
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (f_active_prev && !active && rises > LAST_C);  // a whole frame, then idle
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -26,6 +26,10 @@
 module prenc_converter #(
   parameter integer N        = 10,
   parameter         ROM_FILE = "prenc_rom_n10.hex"
+`ifdef FORMAL
+  ,
+  parameter [31:0]  F_TAPS   = 32'h0000_0204  // the disc's taps, for the properties only
+`endif
 ) (
   input  wire         clk,
   input  wire         rst,
@@ -76,6 +80,39 @@ module prenc_converter #(
     .DEPTH (DEPTH),
     .WIDTH (N)
   ) u_rom_check ();
+`endif
+
+`ifdef FORMAL
+  // Properties (formal/prenc_converter.sby): one clock after a valid word, the output
+  // is the slot p whose window W(p) is that word, on the disc as the datasheet builds
+  // it (formal/prenc_disc_reference.vh): the ROM file is checked, not trusted.
+  localparam [31:0] TAPS = F_TAPS;
+  `include "prenc_disc_reference.vh"
+  reg         f_past_valid = 1'b0;
+  reg         f_rst_prev;
+  reg         f_valid_prev;
+  reg [N-1:0] f_word_prev;
+  reg [N-1:0] f_slot;
+  integer     f_p;
+  always @(*) begin
+    f_slot = {N{1'b0}};
+    for (f_p = 0; f_p < F_L; f_p = f_p + 1) begin
+      if (f_window(f_p) == f_word_prev) f_slot = f_p[N-1:0];
+    end
+  end
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+    f_valid_prev <= word_valid;
+    f_word_prev  <= word;
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      assert (pos_valid == f_valid_prev);
+      if (f_valid_prev) assert (pos == f_slot);
+    end
+  end
 `endif
 
 endmodule

@@ -87,6 +87,65 @@ module prenc_input_conditioner #(
     end
   endgenerate
 
+`ifdef FORMAL
+  // Properties (formal/prenc_input_conditioner.sby). f_raw_hist[k] is in_raw as it was
+  // sampled k clocks ago; f_rst_now is rst at the last clock edge.
+  localparam integer HIST = FILTER + 3;
+  reg             f_past_valid = 1'b0;
+  reg [WIDTH-1:0] f_raw_hist [0:HIST-1];
+  reg             f_rst_now;
+  reg [WIDTH-1:0] f_out_prev;
+  reg [7:0]       f_steps = 8'd0;  // clocks since the start (saturating): history valid
+  integer f_k;
+  integer f_b;
+  always @(posedge clk) begin
+    f_past_valid  <= 1'b1;
+    f_raw_hist[0] <= in_raw;
+    for (f_k = 1; f_k < HIST; f_k = f_k + 1) begin
+      f_raw_hist[f_k] <= f_raw_hist[f_k - 1];
+    end
+    f_rst_now  <= rst;
+    f_out_prev <= in_clean;
+    if (f_steps != 8'hFF) f_steps <= f_steps + 8'd1;
+  end
+  initial assume (rst);
+  reg [WIDTH-1:0] f_steady;  // the FILTER samples that ended two clocks ago are equal
+  always @(*) begin
+    for (f_b = 0; f_b < WIDTH; f_b = f_b + 1) begin
+      f_steady[f_b] = 1'b1;
+      for (f_k = 3; f_k < FILTER + 2; f_k = f_k + 1) begin
+        if (f_raw_hist[f_k][f_b] != f_raw_hist[2][f_b]) begin
+          f_steady[f_b] = 1'b0;
+        end
+      end
+    end
+  end
+  always @(*) begin
+    if (f_steps >= HIST) begin
+      // During reset the output loads the synchronized input (two samples ago).
+      if (f_rst_now) assert (in_clean == f_raw_hist[2]);
+      for (f_b = 0; f_b < WIDTH; f_b = f_b + 1) begin
+        // No pulse shorter than FILTER clocks passes, reset or not: a new output level
+        // was on the input for the FILTER samples that ended two clocks ago.
+        if (!f_rst_now && in_clean[f_b] != f_out_prev[f_b]) begin
+          for (f_k = 2; f_k < FILTER + 2; f_k = f_k + 1) begin
+            assert (f_raw_hist[f_k][f_b] == in_clean[f_b]);
+          end
+        end
+        // The output follows a steady input within 2 + FILTER clocks: after FILTER
+        // equal samples (ending two clocks ago) the output shows them.
+        if (f_steady[f_b]) assert (in_clean[f_b] == f_raw_hist[2][f_b]);
+      end
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (in_clean[0] != f_out_prev[0]);  // an edge passes
+      cover (f_raw_hist[2][0] != in_clean[0] && f_raw_hist[3][0] == in_clean[0]);  // a glitch
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

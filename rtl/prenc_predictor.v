@@ -127,6 +127,54 @@ module prenc_predictor #(
   assign mismatch1 = mismatch1_reg;
   assign mismatch2 = mismatch2_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_predictor.sby), against the disc as the datasheet builds
+  // it (formal/prenc_disc_reference.vh), not as the law computes it.
+  `include "prenc_disc_reference.vh"
+  // The bits after and before the word on the disc, found by searching the disc.
+  reg     f_next;
+  reg     f_prev;
+  reg     f_found;
+  integer f_p;
+  always @(*) begin
+    f_next  = 1'b0;
+    f_prev  = 1'b0;
+    f_found = 1'b0;
+    for (f_p = 0; f_p < F_L; f_p = f_p + 1) begin
+      if (f_window(f_p) == word) begin
+        f_found = 1'b1;
+        f_next  = F_S[(f_p + N) % F_L];
+        f_prev  = F_S[(f_p + F_L - 1) % F_L];
+      end
+    end
+  end
+  reg f_past_valid = 1'b0;
+  reg f_rst_prev;
+  reg f_check_next;
+  reg f_mis1_next;
+  reg f_mis2_next;
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+    f_check_next <= strobe & full;
+    f_mis1_next  <= strobe & full & (strobe_head1 != predict1);
+    f_mis2_next  <= strobe & full & (strobe_head2 != predict2);
+  end
+  initial assume (rst);
+  always @(*) begin
+    assert (f_found);  // every word is on the disc once (de Bruijn)
+    // The leading head's next bit is the disc law on the word; the trailing head's
+    // is already in the word; a reversal re-reads both ends.
+    if (strobe_moved && strobe_cw) assert (predict2 == f_next && predict1 == word[N-2]);
+    if (strobe_moved && !strobe_cw) assert (predict1 == f_prev && predict2 == word[1]);
+    if (!strobe_moved) assert (predict1 == word[N-1] && predict2 == word[0]);
+    // Each check of a full word flags exactly the heads that disagree.
+    if (f_past_valid && !f_rst_prev) begin
+      assert (check == f_check_next && mismatch1 == f_mis1_next && mismatch2 == f_mis2_next);
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -118,6 +118,51 @@ module prenc_quadrature #(
   assign illegal_count = illegal_count_reg;
   assign count         = count_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_quadrature.sby), on the registers after each clock.
+  reg                   f_past_valid = 1'b0;
+  reg [1:0]             f_q_prev;       // the quarter before this clock's input
+  reg [COUNT_WIDTH-1:0] f_count_prev;
+  reg                   f_rst_prev;
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_q_prev     <= quarter_reg;
+    f_count_prev <= count_reg;
+    f_rst_prev   <= rst;
+  end
+  initial assume (rst);
+  wire [1:0] f_delta = quarter_reg - f_q_prev;  // what the last input did
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      // The count moves by at most one step a clock, exactly with a legal step.
+      assert (count_reg == f_count_prev || count_reg == f_count_prev + 1'b1 ||
+              count_reg == f_count_prev - 1'b1);
+      assert (step == (f_delta == 2'd1 || f_delta == 2'd3));
+      if (f_delta == 2'd1) assert (count_reg == f_count_prev + 1'b1 && step_cw);
+      if (f_delta == 2'd3) assert (count_reg == f_count_prev - 1'b1 && !step_cw);
+      // An illegal transition (A and B together) is flagged and never counted.
+      assert (illegal == (f_delta == 2'd2));
+      if (illegal) assert (count_reg == f_count_prev && !step);
+      // No step, no change: the direction is the last legal step's.
+      if (!step) assert (count_reg == f_count_prev);
+    end
+  end
+  // The direction holds between steps.
+  reg f_cw_prev;
+  always @(posedge clk) f_cw_prev <= step_cw;
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev && !step) assert (step_cw == f_cw_prev);
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (step && step_cw);
+      cover (step && !step_cw);
+      cover (illegal);
+      cover (illegal_count_reg == 2);
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -121,6 +121,91 @@ module prenc_sampler #(
   assign strobe_head1 = strobe_head1_reg;
   assign strobe_head2 = strobe_head2_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_sampler.sby). The inputs obey the decoder's contract
+  // (prenc_quadrature, proven in formal/prenc_quadrature.sby): the quarter moves by
+  // one with a step (in step_cw's direction) and by two with a break, else it holds.
+  reg       f_past_valid = 1'b0;
+  reg [1:0] f_q_prev;
+  reg       f_rst_prev;
+  reg       f_mid_prev;       // last clock's input was a mid-slot step
+  reg       f_cw_prev;
+  reg       f_h1_prev;        // the heads at the input sample of last clock's step
+  reg       f_h2_prev;
+  reg       f_land_prev;      // the clock before last was a break into q = 1 or 2
+  reg       f_event_prev;     // last clock had a step or a break
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_q_prev     <= quarter;
+    f_rst_prev   <= rst;
+    f_mid_prev   <= mid_slot;
+    f_cw_prev    <= step_cw;
+    f_h1_prev    <= head1_d;
+    f_h2_prev    <= head2_d;
+    f_land_prev  <= break_in & (quarter == 2'd1 || quarter == 2'd2);
+    f_event_prev <= step | break_in;
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (f_past_valid) begin
+      if (step) assume (quarter == f_q_prev + (step_cw ? 2'd1 : 2'd3) && !break_in);
+      if (break_in) assume (quarter == f_q_prev + 2'd2);
+      if (!step && !break_in) assume (quarter == f_q_prev);
+    end
+  end
+  // Strobe history for "never two for one crossing".
+  reg f_cw_since;   // since the last CW mid-slot strobe: passed q = 0, a CCW strobe or a break
+  reg f_ccw_since;  // since the last CCW one: passed q = 3, a CW strobe or a break
+  reg f_seen_cw;
+  reg f_seen_ccw;
+  always @(posedge clk) begin
+    if (mid_slot && step_cw) begin
+      f_cw_since <= 1'b0;
+      f_seen_cw  <= 1'b1;
+    end else if (quarter == 2'd0 || (mid_slot && !step_cw) || break_in) begin
+      f_cw_since <= 1'b1;
+    end
+    if (mid_slot && !step_cw) begin
+      f_ccw_since <= 1'b0;
+      f_seen_ccw  <= 1'b1;
+    end else if (quarter == 2'd3 || (mid_slot && step_cw) || break_in) begin
+      f_ccw_since <= 1'b1;
+    end
+    if (rst) begin
+      f_seen_cw  <= 1'b0;
+      f_seen_ccw <= 1'b0;
+    end
+  end
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      // A strobe exactly one clock after each mid-slot step (A rising CW, A falling
+      // CCW), with its direction and the heads of that input sample.
+      if (f_mid_prev) begin
+        assert (strobe && strobe_cw == f_cw_prev);
+        assert (strobe_head1 == f_h1_prev && strobe_head2 == f_h2_prev);
+      end
+      // ... and no other strobe, but the landing reading one clock after a break
+      // into q = 1 or 2 when that clock has no event (JUMP = 1).
+      if (strobe && !f_mid_prev) begin
+        assert (JUMP == 1);
+      end
+      // Never two strobes for one crossing (with its inductive invariant: after a CW
+      // strobe the disc stays in q = 2, 3 until it passes q = 0 or strobes back).
+      if (f_seen_cw && !f_cw_since) assert (f_q_prev == 2'd2 || f_q_prev == 2'd3);
+      if (f_seen_ccw && !f_ccw_since) assert (f_q_prev == 2'd1 || f_q_prev == 2'd0);
+      if (mid_slot && step_cw && f_seen_cw && !rst) assert (f_cw_since);
+      if (mid_slot && !step_cw && f_seen_ccw && !rst) assert (f_ccw_since);
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (strobe && strobe_cw);
+      cover (strobe && !strobe_cw && !strobe_moved);  // a crossing back
+      cover (strobe && !f_mid_prev);                  // a landing reading
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -86,6 +86,76 @@ module prenc_shift_register #(
   assign count = count_reg;
   assign full  = (count_reg == N32[CW-1:0]);
 
+`ifdef FORMAL
+  // Properties (formal/prenc_shift_register.sby), on the registers after each clock.
+  reg          f_past_valid = 1'b0;
+  reg          f_rst_prev;
+  reg          f_shift_cw;      // last clock: a CW shift
+  reg          f_shift_ccw;     // last clock: a CCW shift
+  reg [N-1:0]  f_word_before;   // the word and known bits before last clock
+  reg [N-1:0]  f_known_before;
+  reg          f_h1;
+  reg          f_h2;
+  reg          f_armed_cw;      // the word's last change was a CW shift from f_w0
+  reg          f_armed_ccw;     // ... a CCW shift from f_w0
+  reg [N-1:0]  f_w0;
+  reg          f_restore;       // last clock shifted back over the bit that left
+  reg [N-1:0]  f_restore_word;
+  integer      f_i;
+  reg [CW-1:0] f_ones;
+  always @(*) begin
+    f_ones = {CW{1'b0}};
+    for (f_i = 0; f_i < N; f_i = f_i + 1) f_ones = f_ones + {{(CW-1){1'b0}}, known_reg[f_i]};
+  end
+  wire f_cw  = strobe & strobe_moved & strobe_cw;
+  wire f_ccw = strobe & strobe_moved & !strobe_cw;
+  always @(posedge clk) begin
+    f_past_valid   <= 1'b1;
+    f_rst_prev     <= rst | flush;
+    f_shift_cw     <= f_cw;
+    f_shift_ccw    <= f_ccw;
+    f_word_before  <= word_reg;
+    f_known_before <= known_reg;
+    f_h1           <= strobe_head1;
+    f_h2           <= strobe_head2;
+    f_restore      <= (f_ccw & f_armed_cw & (strobe_head1 == f_w0[N-1])) |
+                      (f_cw & f_armed_ccw & (strobe_head2 == f_w0[0]));
+    f_restore_word <= f_w0;
+    f_armed_cw     <= f_cw;
+    f_armed_ccw    <= f_ccw;
+    if (f_cw || f_ccw) f_w0 <= word_reg;
+    if (rst || flush) begin
+      f_restore   <= 1'b0;
+      f_armed_cw  <= 1'b0;
+      f_armed_ccw <= 1'b0;
+    end
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (f_past_valid) begin
+      // count is the number of known bits; full is all of them.
+      assert (count_reg == f_ones);
+      assert (full == (known_reg == {N{1'b1}}));
+    end
+    if (f_past_valid && !f_rst_prev) begin
+      // CW: the word moves up one and the leading head 2 enters at the LSB; CCW the
+      // mirror, with head 1 at the MSB.
+      if (f_shift_cw) assert (word_reg == {f_word_before[N-2:0], f_h2} &&
+                              known_reg == {f_known_before[N-2:0], 1'b1});
+      if (f_shift_ccw) assert (word_reg == {f_h1, f_word_before[N-1:1]} &&
+                               known_reg == {1'b1, f_known_before[N-1:1]});
+      // A shift back undoes a shift forward, when the head reads the bit that left.
+      if (f_restore) assert (word_reg == f_restore_word);
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (full);
+      cover (f_restore);
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -123,6 +123,54 @@ module prenc_ssi #(
   assign ssi_data = data_reg;
   assign busy     = active;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_ssi.sby), on the registers after each clock.
+  reg             f_past_valid = 1'b0;
+  reg             f_rst_prev;
+  reg             f_active_prev;
+  reg [BITS-1:0]  f_frame;     // the frame latched at the first falling edge
+  reg [7:0]       f_rises;     // rising edges of the frame so far
+  reg [23:0]      f_still;     // clocks since ssi_clk last moved or was low (saturating)
+  always @(posedge clk) begin
+    f_past_valid  <= 1'b1;
+    f_rst_prev    <= rst;
+    f_active_prev <= active;
+    if (!active && fall) begin
+      f_frame <= (ERROR_BIT == 1) ? frame : (frame << 1);
+      f_rises <= 8'd0;
+    end else if (active && rise && f_rises != 8'hFF) begin
+      f_rises <= f_rises + 8'd1;
+    end
+    f_still <= (rise || fall || !clk_q2) ? 24'd0 :
+               (f_still == 24'hFFFFFF) ? f_still : f_still + 24'd1;
+    if (rst) f_still <= 24'd0;
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      // Idle: data high.
+      if (!active) assert (ssi_data);
+      // The k-th rising edge of a frame puts frame bit k (MSB first) on the line;
+      // after the last bit the line is low until the monoflop time.
+      if (active && f_rises >= 1 && f_rises <= BITS - ((ERROR_BIT == 1) ? 0 : 1))
+        assert (ssi_data == f_frame[BITS - f_rises]);
+      if (active && f_rises > BITS - ((ERROR_BIT == 1) ? 0 : 1)) assert (!ssi_data);
+      // The latched frame does not change during a frame: the shift register holds
+      // exactly its remaining bits.
+      if (active) assert (shift == (f_frame << f_rises));
+      // The monoflop: a frame ends only when the clock has been high and still for
+      // MONOFLOP clocks, and it does end then.
+      if (f_active_prev && !active) assert (f_still == MONOFLOP);
+      if (active) assert (timer == ((f_still >= MONOFLOP - 1) ? 24'd0 : MONO - f_still));
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (f_active_prev && !active && f_rises == BITS);  // a whole frame
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

