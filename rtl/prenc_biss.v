@@ -183,8 +183,27 @@ module prenc_biss #(
     f_still <= (rise || fall) ? 24'd0 : (f_still == 24'hFFFFFF) ? f_still : f_still + 24'd1;
     if (rst) f_still <= 24'd0;
   end
+  // MA as sampled at the last three clock edges: the synchronizer and the edges the
+  // slave acts on are these samples; the first falling edge starts a frame.
+  reg [2:0] f_raw = 3'b111;
+  reg [1:0] f_raw_ok = 2'd0;  // clocks since the start, up to 3: the history is known
+  reg       f_start;
+  always @(posedge clk) begin
+    f_raw   <= {f_raw[1:0], ma};
+    f_start <= !active && f_raw[2] && !f_raw[1] && f_raw_ok == 2'd3 && !rst;
+    if (f_raw_ok != 2'd3) f_raw_ok <= f_raw_ok + 2'd1;
+    if (rst) f_raw <= 3'b111;  // reset puts the synchronizer at the idle level
+  end
   initial assume (rst);
   always @(*) begin
+    if (f_past_valid && !f_rst_prev && f_raw_ok == 2'd3) begin
+      assert (ma_q1 == f_raw[0] && ma_q2 == f_raw[1] && ma_q3 == f_raw[2]);
+      assert (rise == (!f_raw[2] && f_raw[1]) && fall == (f_raw[2] && !f_raw[1]));
+    end
+    if (f_past_valid && !f_rst_prev) begin
+      assert (latch == f_start);
+      if (f_start) assert (active && rises == 8'd0);
+    end
     if (f_past_valid && !f_rst_prev) begin
       if (!active) assert (slo);
       // After rising edge k of a frame: 1 high, 2 Ack low, 3 Start high, 4 CDS low,

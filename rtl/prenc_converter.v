@@ -108,6 +108,7 @@ module prenc_converter #(
   end
   initial assume (rst);
   always @(*) begin
+    if (f_past_valid && f_rst_prev) assert (!pos_valid);
     if (f_past_valid && !f_rst_prev) begin
       assert (pos_valid == f_valid_prev);
       if (f_valid_prev) assert (pos == f_slot);

@@ -153,6 +153,23 @@ module prenc_predictor #(
   reg f_check_next;
   reg f_mis1_next;
   reg f_mis2_next;
+  reg f_strobe_prev;
+  reg f_pred1_prev;
+  reg f_pred2_prev;
+  reg f_exp1_prev;
+  reg f_exp2_prev;
+  always @(posedge clk) begin
+    f_strobe_prev <= strobe;
+    f_pred1_prev  <= predict1;
+    f_pred2_prev  <= predict2;
+    f_exp1_prev   <= expect1;
+    f_exp2_prev   <= expect2;
+  end
+  always @(*) begin
+    // expect1/2 hold the last strobe's predictions until the next strobe.
+    if (f_past_valid && f_strobe_prev) assert (expect1 == f_pred1_prev && expect2 == f_pred2_prev);
+    if (f_past_valid && !f_strobe_prev) assert (expect1 == f_exp1_prev && expect2 == f_exp2_prev);
+  end
   always @(posedge clk) begin
     f_past_valid <= 1'b1;
     f_rst_prev   <= rst;

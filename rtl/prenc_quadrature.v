@@ -132,6 +132,32 @@ module prenc_quadrature #(
   end
   initial assume (rst);
   wire [1:0] f_delta = quarter_reg - f_q_prev;  // what the last input did
+  // The quarter of the last input sample, from the datasheet's table (A, B) -> q:
+  // (0, 1) 0, (0, 0) 1, (1, 0) 2, (1, 1) 3; and the error count's expected value.
+  reg [1:0]             f_q_pins;
+  reg                   f_clear_prev;
+  reg [ERROR_WIDTH-1:0] f_errors_prev;
+  always @(posedge clk) begin
+    case ({a, b})
+      2'b01:   f_q_pins <= 2'd0;
+      2'b00:   f_q_pins <= 2'd1;
+      2'b10:   f_q_pins <= 2'd2;
+      default: f_q_pins <= 2'd3;
+    endcase
+    f_clear_prev  <= clear_errors;
+    f_errors_prev <= illegal_count_reg;
+  end
+  always @(*) begin
+    if (f_past_valid) begin
+      assert (quarter_reg == f_q_pins);
+      // Reset starts from the pins' state: no step, nothing illegal, count 0.
+      if (f_rst_prev) assert (!step && !illegal && step_cw && count_reg == {COUNT_WIDTH{1'b0}});
+      if (f_rst_prev || f_clear_prev) assert (illegal_count_reg == {ERROR_WIDTH{1'b0}});
+      else if (illegal) assert (illegal_count_reg == ((f_errors_prev == {ERROR_WIDTH{1'b1}}) ?
+                                                     f_errors_prev : f_errors_prev + 1'b1));
+      else assert (illegal_count_reg == f_errors_prev);
+    end
+  end
   always @(*) begin
     if (f_past_valid && !f_rst_prev) begin
       // The count moves by at most one step a clock, exactly with a legal step.

@@ -132,6 +132,8 @@ module prenc_sampler #(
   reg       f_cw_prev;
   reg       f_h1_prev;        // the heads at the input sample of last clock's step
   reg       f_h2_prev;
+  reg       f_hin1;
+  reg       f_hin2;
   reg       f_land_prev;      // the clock before last was a break into q = 1 or 2
   reg       f_event_prev;     // last clock had a step or a break
   always @(posedge clk) begin
@@ -140,10 +142,36 @@ module prenc_sampler #(
     f_rst_prev   <= rst;
     f_mid_prev   <= mid_slot;
     f_cw_prev    <= step_cw;
-    f_h1_prev    <= head1_d;
-    f_h2_prev    <= head2_d;
+    f_hin1       <= head1_in;
+    f_hin2       <= head2_in;
+    f_h1_prev    <= f_hin1;    // the heads' input two clocks back: the step's sample
+    f_h2_prev    <= f_hin2;
     f_land_prev  <= break_in & (quarter == 2'd1 || quarter == 2'd2);
     f_event_prev <= step | break_in;
+  end
+  // The landing reading's inputs (the clock before last) and the strobe history.
+  reg f_land_prev2;
+  reg f_land_h1;
+  reg f_land_h2;
+  reg f_land_cw;
+  reg f_rst_prev2;
+  reg f_have;        // a mid-slot strobe since reset or the last break
+  reg f_last_cw;     // its direction
+  reg f_have_prev;
+  reg f_last_cw_prev;
+  always @(posedge clk) begin
+    f_land_prev2   <= f_land_prev;
+    f_land_h1      <= f_h1_prev;
+    f_land_h2      <= f_h2_prev;
+    f_land_cw      <= f_cw_prev;
+    f_rst_prev2    <= f_rst_prev;
+    f_have_prev    <= f_have;
+    f_last_cw_prev <= f_last_cw;
+    if (mid_slot) begin
+      f_have    <= 1'b1;
+      f_last_cw <= step_cw;
+    end
+    if (break_in || rst) f_have <= 1'b0;
   end
   initial assume (rst);
   always @(*) begin
@@ -184,11 +212,21 @@ module prenc_sampler #(
         assert (strobe && strobe_cw == f_cw_prev);
         assert (strobe_head1 == f_h1_prev && strobe_head2 == f_h2_prev);
       end
-      // ... and no other strobe, but the landing reading one clock after a break
-      // into q = 1 or 2 when that clock has no event (JUMP = 1).
+      // ... and no other strobe, but the landing reading (JUMP = 1): one clock after a
+      // break into q = 1 or 2 when that clock has no event, with the heads of the
+      // break's input sample and its direction, always a new slot.
       if (strobe && !f_mid_prev) begin
-        assert (JUMP == 1);
+        assert (JUMP == 1 && f_land_prev2 && !f_event_prev);
+        assert (strobe_head1 == f_land_h1 && strobe_head2 == f_land_h2);
+        assert (strobe_cw == f_land_cw && strobe_moved);
       end
+      if (f_land_prev2 && !f_event_prev && !f_mid_prev && !f_rst_prev2)
+        assert (strobe == (JUMP == 1));
+      if (!f_mid_prev && !(f_land_prev2 && !f_event_prev)) assert (!strobe);
+      // A mid-slot strobe is in a new slot unless it crosses back the last strobe's
+      // point (the other direction, no break since).
+      if (f_mid_prev) assert (strobe_moved == (!f_have_prev || f_cw_prev == f_last_cw_prev));
+      assert (have_last_reg == f_have && (!f_have || last_cw_reg == f_last_cw));
       // Never two strobes for one crossing (with its inductive invariant: after a CW
       // strobe the disc stays in q = 2, 3 until it passes q = 0 or strobes back).
       if (f_seen_cw && !f_cw_since) assert (f_q_prev == 2'd2 || f_q_prev == 2'd3);

@@ -136,7 +136,7 @@ module prenc_ssi #(
     f_rst_prev    <= rst;
     f_active_prev <= active;
     if (!active && fall) begin
-      f_frame <= (ERROR_BIT == 1) ? frame : (frame << 1);
+      f_frame <= (ERROR_BIT == 1) ? f_code : (f_code << 1);
       f_rises <= 8'd0;
     end else if (active && rise && f_rises != 8'hFF) begin
       f_rises <= f_rises + 8'd1;
@@ -145,8 +145,32 @@ module prenc_ssi #(
                (f_still == 24'hFFFFFF) ? f_still : f_still + 24'd1;
     if (rst) f_still <= 24'd0;
   end
-  initial assume (rst);
+  // The frame as the datasheet of SSI says, written here: the position in Gray code
+  // (p ^ p >> 1) or binary, MSB first, then the error bit (1 = not valid).
+  reg [BITS-1:0] f_code;
   always @(*) begin
+    f_code = {gray ? (position ^ (position >> 1)) : position, ~valid};
+    if (ERROR_BIT == 0) f_code = {1'b0, f_code[BITS-1:1]};
+  end
+  // ssi_clk as sampled at the last three clock edges (f_raw[0] the newest): the
+  // synchronizer, and the edges the module acts on, are these samples.
+  reg [2:0] f_raw = 3'b111;
+  reg [1:0] f_raw_ok = 2'd0;  // clocks since the start, up to 3: the history is known
+  always @(posedge clk) begin
+    f_raw <= {f_raw[1:0], ssi_clk};
+    if (f_raw_ok != 2'd3) f_raw_ok <= f_raw_ok + 2'd1;
+    if (rst) f_raw <= 3'b111;  // reset puts the synchronizer at the idle level
+  end
+  initial assume (rst);
+  // The first falling edge of ssi_clk starts a frame (the clock after the module saw it).
+  reg f_start;
+  always @(posedge clk) f_start <= !active && f_raw[2] && !f_raw[1] && f_raw_ok == 2'd3;
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev && f_start) assert (active && shift == f_frame);
+    if (f_past_valid && !f_rst_prev && f_raw_ok == 2'd3) begin
+      assert (clk_q1 == f_raw[0] && clk_q2 == f_raw[1] && clk_q3 == f_raw[2]);
+      assert (rise == (!f_raw[2] && f_raw[1]) && fall == (f_raw[2] && !f_raw[1]));
+    end
     if (f_past_valid && !f_rst_prev) begin
       // Idle: data high.
       if (!active) assert (ssi_data);

