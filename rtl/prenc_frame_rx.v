@@ -169,6 +169,137 @@ module prenc_frame_rx #(
   assign frame_payload = out_payload;
   assign frame_error   = error_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_frame_rx.sby). The CRC-16/CCITT-FALSE of what the frame
+  // has carried so far (polynomial 0x1021, start 0xFFFF, MSB first: written here from
+  // the definition, not taken from prenc_crc16), over TYPE, LEN and the payload.
+  // A frame is accepted only when its two CRC bytes equal it; after any input,
+  // TIMEOUT clocks without a byte leave the parser hunting for A5.
+  function automatic [15:0] f_crc_byte;
+    input [15:0] c;
+    input [7:0]  d;
+    integer k;
+    begin
+      f_crc_byte = c;
+      for (k = 7; k >= 0; k = k - 1) begin
+        f_crc_byte = (f_crc_byte[15] ^ d[k]) ? ({f_crc_byte[14:0], 1'b0} ^ 16'h1021)
+                                             : {f_crc_byte[14:0], 1'b0};
+      end
+    end
+  endfunction
+  reg        f_past_valid = 1'b0;
+  reg        f_rst_prev;
+  reg [15:0] f_crc;      // the reference CRC of the frame's bytes so far
+  reg [7:0]  f_crc_hi;   // the frame's first CRC byte
+  reg [7:0]  f_last;     // the last byte received
+  reg [7:0]  f_type;
+  reg [7:0]  f_len;
+  reg [23:0] f_quiet = 24'd0;  // clocks without a byte (saturating)
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+    f_quiet <= (byte_valid || byte_error) ? 24'd0 :
+               (f_quiet == 24'hFFFFFF) ? f_quiet : f_quiet + 24'd1;
+    if (byte_valid) begin
+      f_last <= byte_data;
+      if (state == HUNT) f_crc <= 16'hFFFF;
+      if (state == TYPE || state == LEN || state == PAYLOAD) f_crc <= f_crc_byte(f_crc, byte_data);
+      if (state == TYPE) f_type <= byte_data;
+      if (state == LEN) f_len <= byte_data;
+      if (state == CRC_HI) f_crc_hi <= byte_data;
+    end
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (f_past_valid) assume (!rst);
+    if (f_past_valid && !f_rst_prev) begin
+      // Accepted: the CRC bytes received equal the reference, and the outputs are the
+      // frame's TYPE and LEN.
+      if (frame_valid) assert ({f_crc_hi, f_last} == f_crc && frame_type == f_type &&
+                               frame_len == f_len);
+      // Invariants of the parse (what makes the proof inductive).
+      if (state != HUNT && state != TYPE) assert (crc == f_crc);
+      if (state == PAYLOAD) assert (index < len_reg && len_reg <= MAX_LEN_8 && len_reg == f_len);
+      if (state == CRC_HI || state == CRC_LO) assert (len_reg == f_len && type_reg == f_type);
+      if (state == LEN || state == PAYLOAD) assert (type_reg == f_type);
+      // It cannot lock up.
+      if (state != HUNT) assert (idle <= IDLE_LIMIT && idle <= f_quiet);
+      if (f_quiet > IDLE_LIMIT) assert (state == HUNT);
+    end
+  end
+  // A good frame after any input: once the line has been quiet for the timeout, a
+  // sender sends A5, TYPE, LEN (up to MAX_LEN), the payload and its CRC, one byte a
+  // clock (values chosen by the solver); the parser accepts it with its TYPE and LEN.
+  (* anyconst *) reg [7:0] f_s_type;
+  (* anyconst *) reg [7:0] f_s_len;
+  (* anyconst *) reg [7:0] f_s_data;     // every payload byte
+  (* anyseq *)   reg       f_go;
+  reg        f_sending;
+  reg [7:0]  f_k;        // bytes sent
+  reg [15:0] f_s_crc;    // the sender's CRC so far
+  reg        f_s_done;   // the last byte went out on the last clock
+  reg [7:0]  f_s_byte;
+  always @(*) begin
+    if (f_k == 8'd0) f_s_byte = SOF;
+    else if (f_k == 8'd1) f_s_byte = f_s_type;
+    else if (f_k == 8'd2) f_s_byte = f_s_len;
+    else if (f_k < 8'd3 + f_s_len) f_s_byte = f_s_data;
+    else if (f_k == 8'd3 + f_s_len) f_s_byte = f_s_crc[15:8];
+    else f_s_byte = f_s_crc[7:0];
+  end
+  always @(posedge clk) begin
+    f_s_done <= 1'b0;
+    if (!f_sending && f_go && f_quiet > IDLE_LIMIT && !byte_valid && !byte_error && !rst) begin
+      f_sending <= 1'b1;
+      f_k       <= 8'd0;
+      f_s_crc   <= 16'hFFFF;
+    end else if (f_sending) begin
+      if (f_k >= 8'd1 && f_k < 8'd3 + f_s_len) f_s_crc <= f_crc_byte(f_s_crc, f_s_byte);
+      f_k <= f_k + 8'd1;
+      if (f_k == 8'd4 + f_s_len) begin
+        f_sending <= 1'b0;
+        f_s_done  <= 1'b1;
+      end
+    end
+    if (rst) f_sending <= 1'b0;
+  end
+  initial assume (!f_sending);
+  reg [8*MAX_LEN-1:0] f_s_payload;  // LEN copies of the payload byte, zeros past LEN
+  integer f_b;
+  always @(*) begin
+    for (f_b = 0; f_b < MAX_LEN; f_b = f_b + 1) begin
+      f_s_payload[8*f_b +: 8] = (f_b < f_s_len) ? f_s_data : 8'd0;
+    end
+  end
+  always @(*) begin
+    assume (f_s_len <= MAX_LEN_8);
+    if (f_sending) assume (byte_valid && !byte_error && byte_data == f_s_byte);
+    if (f_past_valid && !f_rst_prev && f_s_done)
+      assert (frame_valid && frame_type == f_s_type && frame_len == f_s_len &&
+              frame_payload == f_s_payload);
+    // The parse follows the sender byte by byte (what makes the proof inductive).
+    if (f_past_valid && !f_rst_prev && f_sending) begin
+      if (f_k == 8'd0) assert (state == HUNT);
+      if (f_k == 8'd1) assert (state == TYPE);
+      if (f_k == 8'd2) assert (state == LEN && type_reg == f_s_type);
+      if (f_k >= 8'd3 && f_k < 8'd3 + f_s_len)
+        assert (state == PAYLOAD && index == f_k - 8'd3 && len_reg == f_s_len);
+      if (f_k == 8'd3 + f_s_len) assert (state == CRC_HI && len_reg == f_s_len);
+      if (f_k == 8'd4 + f_s_len) assert (state == CRC_LO && crc_hi == f_s_crc[15:8]);
+      if (f_k >= 8'd1) assert (crc == f_s_crc);
+      if (f_k >= 8'd3) assert (type_reg == f_s_type && f_len == f_s_len);
+      for (f_b = 0; f_b < MAX_LEN; f_b = f_b + 1) begin
+        if (f_k >= 8'd1) assert (payload[8*f_b +: 8] == ((f_b + 3 < f_k && f_b < f_s_len) ?
+                                                        f_s_data : 8'd0));
+      end
+      assert (f_k <= 8'd4 + f_s_len);
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) cover (frame_valid && frame_len == MAX_LEN_8);
+  end
+`endif
+
 endmodule
 
 `resetall
