@@ -209,7 +209,24 @@ module prenc_frame_rx #(
       if (state == CRC_HI) f_crc_hi <= byte_data;
     end
   end
+  // The clock after a frame's last byte: accepted exactly when its CRC matches,
+  // rejected (one frame_error) exactly when it does not; an error only ends a frame.
+  reg f_closing;
+  reg f_match;
+  reg f_in_frame;
+  always @(posedge clk) begin
+    f_closing  <= byte_valid && !byte_error && state == CRC_LO;
+    f_match    <= ({f_crc_hi, byte_data} == f_crc);
+    f_in_frame <= (state != HUNT);
+  end
   initial assume (rst);
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      if (f_closing) assert (frame_valid == f_match && frame_error == !f_match);
+      if (frame_error) assert (f_in_frame);
+      if (f_sending) assert (!frame_error);
+    end
+  end
   always @(*) begin
     if (f_past_valid) assume (!rst);
     if (f_past_valid && !f_rst_prev) begin
