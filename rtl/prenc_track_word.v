@@ -253,9 +253,11 @@ module prenc_track_word #(
   end
   wire demote = law_reg & (score_reg >= S_LIMIT);  // registered: off the score path
 
-  // &known_next of the event below, from the registers in parallel with it.
+  // &known_next of the event below (ev_up first, as there), from the registers in
+  // parallel with it.
+  wire down_end   = ~ev_up & ev_down & at_bottom;
   wire full_after = (ev_up & at_top)      ? ((&known_reg[N-2:0]) & (ext_hi_reg != 6'd0)) :
-                    (ev_down & at_bottom) ? ((&known_reg[N-1:1]) & (ext_lo_reg != 6'd0)) :
+                    down_end              ? ((&known_reg[N-1:1]) & (ext_lo_reg != 6'd0)) :
                     (ev_up | ev_down)     ? (&known_reg) :
                     (strobe & ~law_reg)   ? (&(known_reg | at_index)) : (&known_reg);
 
@@ -405,6 +407,252 @@ module prenc_track_word #(
                        (ext_sum > {1'b0, E_MAX}) ? E_MAX : ext_sum[5:0];
   assign settled     = (score_reg == {SW{1'b0}});
   assign quiet       = (quiet_reg == Q_MAX);
+
+`ifdef FORMAL
+  // Properties (formal/prenc_track_word.sby), against a disc built from the datasheet
+  // (formal/prenc_disc_reference.vh), not from the law: a window that is W(p) slides
+  // to W(p + 1) past its top and to W(p - 1) past its bottom (so a slide back undoes a
+  // slide forward); a raw strobe writes the reading at the index; a law-mode strobe
+  // compares the reading with the disc's bit at the index, and with the bits one slot
+  // either side; base = count - index + HEAD_OFFSET.
+  `include "prenc_disc_reference.vh"
+  function automatic [N-1:0] f_pos;  // the slot whose window is w (every word is one)
+    input [N-1:0] w;
+    integer p;
+    begin
+      f_pos = {N{1'b0}};
+      for (p = 0; p < F_L; p = p + 1) begin
+        if (f_window(p) == w) f_pos = p[N-1:0];
+      end
+    end
+  endfunction
+  function automatic f_bit;  // s(p) on the reference disc, p modulo 2^N
+    input [N-1:0] p;
+    begin
+      f_bit = F_S[p];
+    end
+  endfunction
+  reg f_past_valid = 1'b0;
+  reg f_rst_prev;
+  reg [N-1:0] f_slot_prev;
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+    f_slot_prev  <= slot;
+  end
+  initial assume (rst);
+  // The core's count: it moves one slot with up or down, otherwise it holds.
+  always @(*) begin
+    assume (!(up && down));
+    if (f_past_valid) begin
+      if (up) assume (slot == f_slot_prev + 1'b1);
+      else if (down) assume (slot == f_slot_prev - 1'b1);
+      else assume (slot == f_slot_prev);
+    end
+  end
+  // Last clock's window and event.
+  reg [N-1:0]  f_p_prev;      // the slot of last clock's window
+  reg [IW-1:0] f_index_prev;
+  reg          f_slide_up;
+  reg          f_slide_down;
+  reg          f_write;
+  reg          f_head_prev;
+  reg          f_clear_prev;   // a flush, a demotion or an illegal step in raw mode
+  reg          f_law_strobe;
+  always @(posedge clk) begin
+    f_p_prev     <= f_pos(word_reg);
+    f_index_prev <= index_reg;
+    f_slide_up   <= ev_up && at_top;
+    f_slide_down <= !ev_up && ev_down && at_bottom;
+    f_write      <= !ev_up && !ev_down && strobe && !law_reg;
+    f_head_prev  <= head;
+    f_clear_prev <= flush || demote || (illegal && !law_reg);
+    f_law_strobe <= strobe && law_reg;
+  end
+  wire [N-1:0] f_here = f_p_prev + {{(N - IW){1'b0}}, f_index_prev};
+  always @(*) begin
+    if (f_past_valid) begin
+      assert (index_reg <= LAST);
+      assert (at_top == (index_reg == LAST) && at_bottom == (index_reg == {IW{1'b0}}));
+      assert (full_reg == (&known_reg));
+      assert (supported == (law_reg && score_reg < S_LIMIT));
+    end
+    if (f_past_valid && !f_rst_prev) begin
+      // The laws, registered with the word: the disc's bits after and before it.
+      assert (fwd_bit == f_bit(f_pos(word_reg) + N[N-1:0]));
+      assert (inv_bit == f_bit(f_pos(word_reg) - 1'b1));
+      assert (base_reg == f_slot_prev - {{(N - IW){1'b0}}, index_reg} + HO32[N-1:0]);
+      if (f_slide_up) assert (word_reg == f_window(f_p_prev + 1'b1));
+      if (f_slide_down) assert (word_reg == f_window(f_p_prev - 1'b1));
+      if (!f_slide_up && !f_slide_down && !f_write) assert (f_pos(word_reg) == f_p_prev);
+      if (f_write) begin
+        assert (in_order[f_index_prev] == f_head_prev);
+        assert (known_reg[N - 1 - f_index_prev] || f_clear_prev);
+      end
+      if (f_law_strobe) begin
+        assert (checked && mismatch == (f_head_prev ^ f_bit(f_here)));
+        assert (mismatch_lo == (f_head_prev ^ f_bit(f_here - 1'b1)));
+        assert (mismatch_hi == (f_head_prev ^ f_bit(f_here + 1'b1)));
+      end else begin
+        assert (!checked && !mismatch && !mismatch_lo && !mismatch_hi);
+      end
+    end
+  end
+  // The head's record: the score (+ SCORE_UP per disagreement, - 1 per agreement,
+  // within 0..SCORE_LIMIT; zero when the track turns to law mode), the agreeing checks
+  // since the last disagreement (up to QUIET), the error count; the lock evidence.
+  wire f_alt    = dual_cw ? mismatch_lo : mismatch_hi;
+  wire f_scored = (checked && !(dual && mismatch != f_alt)) || raw_checked_reg;
+  wire f_dis    = checked ? mismatch : raw_changed_reg;
+  reg          f_scored_prev;
+  reg          f_dis_prev;
+  reg          f_law_on_prev;
+  reg          f_strobe_prev;
+  reg          f_clear_errors_prev;
+  reg          f_count_error;
+  reg [SW-1:0] f_score_prev;
+  reg [5:0]    f_quiet_prev;
+  reg [ERROR_WIDTH-1:0] f_errors_prev;
+  reg          f_raw_read;     // last clock: a raw strobe at a bit read or predicted before
+  reg          f_raw_changed;  // ... that the reading changed
+  always @(posedge clk) begin
+    f_scored_prev       <= f_scored;
+    f_dis_prev          <= f_dis;
+    f_law_on_prev       <= law_on;
+    f_strobe_prev       <= strobe;
+    f_clear_errors_prev <= clear_errors;
+    f_count_error       <= checked && mismatch;
+    f_score_prev        <= score_reg;
+    f_quiet_prev        <= quiet_reg;
+    f_errors_prev       <= errors_reg;
+    f_raw_read          <= strobe && !law_reg && !ev_up && !ev_down && primed_reg && !law_on;
+    f_raw_changed       <= head != in_order[index_reg];
+  end
+  wire [SW:0]  f_score_up = {1'b0, f_score_prev} + {1'b0, S_UP};
+  wire [6:0]   f_span_sum = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      assert (strobe_q == f_strobe_prev);
+      assert (raw_checked_reg == f_raw_read && raw_changed_reg == f_raw_changed);
+      if (f_law_on_prev) assert (score_reg == {SW{1'b0}});
+      else if (f_scored_prev && f_dis_prev)
+        assert (score_reg == ((f_score_up > {1'b0, S_LIMIT}) ? S_LIMIT : f_score_up[SW-1:0]));
+      else if (f_scored_prev && f_score_prev != {SW{1'b0}})
+        assert (score_reg == f_score_prev - 1'b1);
+      else assert (score_reg == f_score_prev);
+      if (f_scored_prev) begin
+        assert (quiet_reg == (f_dis_prev ? 6'd0 :
+                              (f_quiet_prev == Q_MAX) ? Q_MAX : f_quiet_prev + 1'b1));
+      end else begin
+        assert (quiet_reg == f_quiet_prev);
+      end
+      if (f_clear_errors_prev) assert (errors_reg == {ERROR_WIDTH{1'b0}});
+      else if (f_count_error && f_errors_prev != {ERROR_WIDTH{1'b1}})
+        assert (errors_reg == f_errors_prev + 1'b1);
+      else assert (errors_reg == f_errors_prev);
+    end
+    if (f_past_valid) begin
+      assert (settled == (score_reg == {SW{1'b0}}) && quiet == (quiet_reg == Q_MAX));
+      assert (score_reg <= S_LIMIT && quiet_reg <= Q_MAX);
+      assert (span == ((full_reg && !law_reg) ?
+                       ((f_span_sum > {1'b0, E_MAX}) ? E_MAX : f_span_sum[5:0]) : 6'd0));
+      if (f_rst_prev) assert (errors_reg == {ERROR_WIDTH{1'b0}} && score_reg == {SW{1'b0}} &&
+                              quiet_reg == Q_MAX && !law_reg && known_reg == {N{1'b0}});
+    end
+  end
+  // The lock evidence never overstates: in raw mode, every known bit of the window is
+  // the head's last reading at its slot, and the ext_hi (ext_lo) slots above (below)
+  // the window were last read as the disc continues (precedes) the window. Readings
+  // are recorded as the design takes them (raw strobes on clocks without a move) and
+  // forgotten where it forgets them (flush, demotion, an illegal step in raw mode). A
+  // realignment (the judge found the count one slot off) moves them one count with
+  // the window: down for realign_up, up for realign_down.
+  reg [F_L-1:0] f_rd;   // the last reading at each count
+  reg [F_L-1:0] f_has;  // read since the last clear
+  always @(posedge clk) begin
+    if (idle && pending_reg[1]) begin
+      f_rd  <= {f_rd[0], f_rd[F_L-1:1]};
+      f_has <= {f_has[0], f_has[F_L-1:1]};
+    end else if (idle && pending_reg[0]) begin
+      f_rd  <= {f_rd[F_L-2:0], f_rd[F_L-1]};
+      f_has <= {f_has[F_L-2:0], f_has[F_L-1]};
+    end
+    if (!ev_up && !ev_down && strobe && !law_reg) begin
+      f_rd[slot]  <= head;
+      f_has[slot] <= 1'b1;
+    end
+    if (rst || flush || demote || (illegal && !law_reg)) f_has <= {F_L{1'b0}};
+  end
+  function automatic [1:0] f_read;  // {read since the last clear, last reading} at count c
+    input [N-1:0] c;  // modulo 2^N
+    begin
+      f_read = {f_has[c], f_rd[c]};
+    end
+  endfunction
+  wire [N-1:0] f_b0 = base_reg - HO32[N-1:0];  // the count of the window's first bit
+  wire [N-1:0] f_p  = f_pos(word_reg);
+  integer f_i;
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev && !law_reg) begin
+      for (f_i = 0; f_i < N; f_i = f_i + 1) begin
+        if (known_reg[N - 1 - f_i]) begin
+          assert (f_read(f_b0 + f_i) == {1'b1, in_order[f_i]});
+        end
+      end
+      for (f_i = 0; f_i < EXT_MAX; f_i = f_i + 1) begin
+        if (ext_hi_reg > f_i) begin
+          assert (f_read(f_b0 + N + f_i) == {1'b1, f_bit(f_p + N + f_i)});
+        end
+        if (ext_lo_reg > f_i) begin
+          assert (f_read(f_b0 - 1 - f_i) == {1'b1, f_bit(f_p - 1 - f_i)});
+        end
+      end
+      assert (ext_lo_reg <= E_MAX && ext_hi_reg <= E_MAX);
+    end
+  end
+  // The window's offset (its disc slot less its count) holds through every count move
+  // and slide; a realignment, on the first clock without an event after the judge's
+  // pulse, moves it one slot (+1 for realign_up); a write (raw mode) changes the word.
+  reg  [1:0]   f_pend;  // {up, down} waiting for a clock without an event
+  wire [N-1:0] f_woff = f_pos(word_reg) - f_b0;
+  reg  [N-1:0] f_woff_prev;
+  reg          f_moved_off;  // last clock: a realignment took effect, which way
+  reg          f_realign_up_prev;
+  reg          f_reset_prev;  // last clock: flush, demotion or reset (the window restarts)
+  always @(posedge clk) begin
+    f_pend            <= (idle ? 2'b00 : f_pend) | {realign_up, realign_down};
+    f_woff_prev       <= f_woff;
+    f_moved_off       <= idle && (f_pend != 2'b00);
+    f_realign_up_prev <= f_pend[1];
+    f_reset_prev      <= rst || flush || demote;
+    if (rst || flush || demote) f_pend <= 2'b00;
+  end
+  // Law mode: on the judge's law_on; back to raw mode on a flush or at SCORE_LIMIT.
+  reg f_law_expected;
+  always @(posedge clk) begin
+    f_law_expected <= !flush && !(law_reg && score_reg >= S_LIMIT) && (law_on || law_reg);
+  end
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      assert (law_reg == f_law_expected);
+      assert (pending_reg == f_pend);
+      if (!f_reset_prev && !f_write) begin
+        if (f_moved_off) assert (f_woff == (f_realign_up_prev ? f_woff_prev + 1'b1 :
+                                                                f_woff_prev - 1'b1));
+        else assert (f_woff == f_woff_prev);
+      end
+    end
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (f_slide_up && law_reg);
+      cover (f_slide_down && law_reg);
+      cover (full_reg && !law_reg && span == 6'd3);
+      cover (demote);
+      cover (supported && f_law_strobe && mismatch);
+    end
+  end
+`endif
 
 endmodule
 
