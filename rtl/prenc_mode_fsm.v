@@ -413,6 +413,274 @@ module prenc_mode_fsm #(
   assign realign_up   = realign_reg[1];
   assign realign_down = realign_reg[0];
 
+`ifdef FORMAL
+  // Properties (formal/prenc_mode_fsm.sby), on the registers after each clock. The
+  // evidence is restated from the inputs, one clock before the decision as the judge
+  // registers it (the `*_ahead` inputs), not read from the judge's own registers.
+  reg f_past_valid = 1'b0;
+  reg f_rst_prev;
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+  end
+  initial assume (rst);
+  // The core's inputs are consistent: the count moves at most one slot a clock, and
+  // the *_ahead slots are the next clocks' (the pipeline of prenc_core).
+  reg [N-1:0] f_ahead2_prev;
+  reg [N-1:0] f_ahead2_prev2;
+  reg         f_past_valid2 = 1'b0;
+  always @(posedge clk) begin
+    f_ahead2_prev  <= slot_ahead2;
+    f_ahead2_prev2 <= f_ahead2_prev;
+    f_past_valid2  <= f_past_valid;
+  end
+  always @(*) begin
+    if (f_past_valid) assume (slot_ahead == f_ahead2_prev[1:0]);
+    if (f_past_valid2) assume (slot == f_ahead2_prev2);
+    if (f_past_valid) begin
+      assume (slot_ahead2 == f_ahead2_prev || slot_ahead2 == f_ahead2_prev + 1'b1 ||
+              slot_ahead2 == f_ahead2_prev - 1'b1);
+    end
+    assume (!(strobe && illegal));  // one event a clock
+  end
+  // Lock evidence of this clock's event, from the last clock's *_ahead inputs.
+  localparam [6:0] F_BOTH = LOCK_BOTH - 1;
+  localparam [6:0] F_ONE  = LOCK_ONE - 1;
+  localparam [6:0] F_X    = LOCK_EXTRA;
+  reg [1:0] f_ready;     // full and settled
+  reg [1:0] f_span_both;
+  reg [1:0] f_span_one;
+  reg [1:0] f_vote_keep;   // a reading that matches the count's hypothesis, not the other
+  reg [1:0] f_vote_other;  // the mirror
+  wire [1:0] f_alt = (dual ? dual_cw : illegal_cw) ? mismatch_lo_ahead : mismatch_hi_ahead;
+  always @(posedge clk) begin
+    f_ready        <= full_ahead & settled_ahead;
+    f_span_both[0] <= {1'b0, span1_ahead} >= F_BOTH + ((&quiet_ahead) ? 7'd0 : F_X);
+    f_span_both[1] <= {1'b0, span2_ahead} >= F_BOTH + ((&quiet_ahead) ? 7'd0 : F_X);
+    f_span_one[0]  <= {1'b0, span1_ahead} >= F_ONE + (quiet_ahead[0] ? 7'd0 : F_X);
+    f_span_one[1]  <= {1'b0, span2_ahead} >= F_ONE + (quiet_ahead[1] ? 7'd0 : F_X);
+    f_vote_keep    <= checked_ahead & ~mismatch_ahead & f_alt;
+    f_vote_other   <= checked_ahead & mismatch_ahead & ~f_alt;
+    if (rst) begin
+      f_ready      <= 2'b00;
+      f_span_both  <= 2'b00;
+      f_span_one   <= 2'b00;
+      f_vote_keep  <= 2'b00;
+      f_vote_other <= 2'b00;
+    end
+  end
+  wire f_both = f_ready[0] && f_ready[1] && off1 == off2 && (&f_span_both);
+  wire f_one1 = f_ready[0] && f_span_one[0] && !(f_ready[1] && off1 != off2);
+  wire f_one2 = f_ready[1] && f_span_one[1] && !(f_ready[0] && off1 != off2);
+  // Two open hypotheses, as documented: the slots read since the transition form an
+  // interval around its slot (the count moves one slot a clock at most); a reading
+  // outside it and within DUAL_SPAN slots is a vote where the hypotheses differ.
+  reg        [N-1:0] f_anchor;
+  reg signed [N-1:0] f_lo;  // slots read since the transition, relative to it
+  reg signed [N-1:0] f_hi;  // (none yet: lo > hi)
+  wire signed [N-1:0] f_rel = slot - f_anchor;
+  wire f_far   = (f_rel > DUAL_SPAN) || (f_rel < -DUAL_SPAN);
+  wire f_fresh = (f_rel < f_lo) || (f_rel > f_hi);
+  wire f_counting = dual && strobe && !f_far && f_fresh;
+  reg [2:0] f_keep_n;
+  reg [2:0] f_other_n;
+  reg [1:0] f_keep_heads;
+  reg [1:0] f_other_heads;
+  wire [2:0] f_keep_add  = {2'b00, f_vote_keep[0]} + {2'b00, f_vote_keep[1]};
+  wire [2:0] f_other_add = {2'b00, f_vote_other[0]} + {2'b00, f_vote_other[1]};
+  wire [3:0] f_keep_sum  = {1'b0, f_keep_n} + {1'b0, f_keep_add};
+  wire [3:0] f_other_sum = {1'b0, f_other_n} + {1'b0, f_other_add};
+  wire [2:0] f_keep_now  = !f_counting ? f_keep_n : f_keep_sum[3] ? 3'd7 : f_keep_sum[2:0];
+  wire [2:0] f_other_now = !f_counting ? f_other_n : f_other_sum[3] ? 3'd7 : f_other_sum[2:0];
+  wire [1:0] f_keep_heads_now  = f_keep_heads | (f_counting ? f_vote_keep : 2'b00);
+  wire [1:0] f_other_heads_now = f_other_heads | (f_counting ? f_vote_other : 2'b00);
+  always @(posedge clk) begin
+    f_keep_n      <= dual ? f_keep_now : 3'd0;
+    f_other_n     <= dual ? f_other_now : 3'd0;
+    f_keep_heads  <= dual ? f_keep_heads_now : 2'b00;
+    f_other_heads <= dual ? f_other_heads_now : 2'b00;
+    if (!dual) begin
+      f_anchor <= slot;
+      f_lo     <= 1;
+      f_hi     <= 0;
+    end else if (f_counting) begin
+      if (f_rel < f_lo) f_lo <= f_rel;
+      if (f_rel > f_hi) f_hi <= f_rel;
+    end
+    if (rst) begin
+      f_keep_n      <= 3'd0;
+      f_other_n     <= 3'd0;
+      f_keep_heads  <= 2'b00;
+      f_other_heads <= 2'b00;
+    end
+  end
+  // Last clock's state and decision inputs.
+  reg         f_valid_prev;
+  reg         f_dual_prev;
+  reg         f_dual_cw_prev;
+  reg         f_strobe_prev;
+  reg         f_illegal_prev;
+  reg         f_both_prev;
+  reg         f_one1_prev;
+  reg         f_one2_prev;
+  reg [N-1:0] f_off1_prev;
+  reg [N-1:0] f_off2_prev;
+  reg [N-1:0] f_offset_prev;
+  reg [2:0]   f_mode_prev;
+  reg [1:0]   f_sup_prev;     // the tracks supporting, once last clock's pulses landed
+  reg [2:0]   f_keep_prev;    // votes up to last clock's event, included
+  reg [2:0]   f_other_prev;
+  reg [1:0]   f_keep_heads_prev;
+  reg [1:0]   f_other_heads_prev;
+  reg         f_far_prev;
+  reg         f_counting_prev;
+  reg [1:0]   f_full_prev;    // the judge's view of full (registered from full_ahead)
+  reg [1:0]   f_lawish_prev;  // the tracks in law mode, once last clock's pulses landed
+  reg [1:0]   f_full;
+  always @(posedge clk) begin
+    f_full <= rst ? 2'b00 : full_ahead;
+  end
+  always @(posedge clk) begin
+    f_far_prev         <= f_far;
+    f_counting_prev    <= f_counting;
+    f_full_prev        <= f_full;
+    f_lawish_prev      <= (law & ~flush) | law_on;
+    f_valid_prev       <= pos_valid;
+    f_dual_prev        <= dual;
+    f_dual_cw_prev     <= dual_cw;
+    f_strobe_prev      <= strobe;
+    f_illegal_prev     <= illegal;
+    f_both_prev        <= f_both;
+    f_one1_prev        <= f_one1;
+    f_one2_prev        <= f_one2;
+    f_off1_prev        <= off1;
+    f_off2_prev        <= off2;
+    f_offset_prev      <= offset;
+    f_mode_prev        <= mode;
+    f_sup_prev         <= (supported & ~flush) | law_on;
+    f_keep_prev        <= f_keep_now;
+    f_other_prev       <= f_other_now;
+    f_keep_heads_prev  <= f_keep_heads_now;
+    f_other_heads_prev <= f_other_heads_now;
+  end
+  localparam [2:0] F_VOTES = DUAL_VOTES;
+  always @(*) begin
+    if (f_past_valid) begin
+      assert (mode <= INCREMENTAL);
+      assert (pos_valid == (mode == NORMAL || mode == REDUCED_1 || mode == REDUCED_2));
+      if (dual) assert (mode == INCREMENTAL);
+    end
+    if (f_past_valid && f_rst_prev) assert (mode == ACQUIRE && !dual && flush == 2'b00);
+    if (f_past_valid && !f_rst_prev) begin
+      // While valid, the offset stands: the position moves only with the count.
+      if (f_valid_prev && pos_valid) assert (offset == f_offset_prev);
+      // Two hypotheses open: the offset stands and pos_valid is 0.
+      if (f_dual_prev && dual) assert (offset == f_offset_prev && dual_cw == f_dual_cw_prev);
+      // An illegal transition: pos_valid is 0 on the next clock; while valid with both
+      // tracks supporting it opens two hypotheses, otherwise the offset is dropped.
+      if (f_illegal_prev) assert (!pos_valid);
+      if (f_illegal_prev && f_valid_prev) begin
+        if (f_sup_prev == 2'b11) assert (dual && offset == f_offset_prev);
+        else assert (!dual && mode == INCREMENTAL && flush == 2'b11);
+      end
+      // pos_valid rises only on the documented evidence.
+      if (pos_valid && !f_valid_prev && !f_dual_prev) begin
+        // A lock from acquiring or incremental: this strobe's tracks, with the lock
+        // depth and agreement, give the offset, and those tracks turn to law mode.
+        assert (f_strobe_prev);
+        assert ((f_both_prev && offset == f_off1_prev && law_on == 2'b11 && mode == NORMAL) ||
+                (!f_both_prev && f_one1_prev && offset == f_off1_prev && law_on == 2'b01 &&
+                 mode == REDUCED_1) ||
+                (!f_both_prev && !f_one1_prev && f_one2_prev && offset == f_off2_prev &&
+                 law_on == 2'b10 && mode == REDUCED_2));
+      end
+      if (pos_valid && f_dual_prev) begin
+        // Two hypotheses decided: DUAL_VOTES readings at least for the winner, one
+        // from each head at least; the count's way keeps the offset, the other way
+        // moves it one slot and realigns the tracks.
+        assert (f_strobe_prev);
+        if (offset == f_offset_prev) begin
+          assert (f_keep_prev >= F_VOTES && f_keep_heads_prev == 2'b11);
+          assert (!realign_up && !realign_down);
+        end else begin
+          assert (f_other_prev >= F_VOTES && f_other_heads_prev == 2'b11);
+          assert (offset == (f_dual_cw_prev ? f_offset_prev - 1'b1 : f_offset_prev + 1'b1));
+          assert (realign_up == !f_dual_cw_prev && realign_down == f_dual_cw_prev);
+        end
+      end
+      // Two hypotheses: a second illegal transition, a reading beyond DUAL_SPAN slots,
+      // votes both ways or a track losing support drop the offset; DUAL_VOTES votes
+      // from both heads and none the other way decide; otherwise both stay open.
+      if (f_dual_prev) begin
+        if (f_illegal_prev || (f_strobe_prev && f_far_prev) ||
+            (f_counting_prev && f_keep_prev != 3'd0 && f_other_prev != 3'd0)) begin
+          assert (!dual && mode == INCREMENTAL && flush == 2'b11);
+        end else if (f_counting_prev && f_keep_prev >= F_VOTES && f_keep_heads_prev == 2'b11) begin
+          assert (!dual && offset == f_offset_prev && (pos_valid || flush == 2'b11));
+        end else if (f_counting_prev && f_other_prev >= F_VOTES &&
+                     f_other_heads_prev == 2'b11) begin
+          assert (!dual && (pos_valid || flush == 2'b11));
+          assert (offset == (f_dual_cw_prev ? f_offset_prev - 1'b1 : f_offset_prev + 1'b1));
+        end else if (f_sup_prev == 2'b11) begin
+          assert (dual);
+        end else begin
+          assert (!dual && mode == INCREMENTAL && flush == 2'b11);
+        end
+      end
+      // Return to normal: while valid, a track in raw mode whose full window converts
+      // to the offset rejoins (turns to law mode) on that strobe; no other track does.
+      if (f_valid_prev && f_strobe_prev) begin
+        assert (law_on == (f_full_prev & ~f_lawish_prev &
+                           {f_off2_prev == f_offset_prev, f_off1_prev == f_offset_prev}));
+      end
+      // No track supporting: the offset is dropped.
+      if (f_valid_prev && f_sup_prev == 2'b00 && law_on == 2'b00) assert (!pos_valid);
+      // A valid mode names the tracks that support the offset.
+      if (f_valid_prev && pos_valid && !f_strobe_prev) begin
+        assert (mode == ((f_sup_prev == 2'b11) ? NORMAL :
+                         (f_sup_prev == 2'b01) ? REDUCED_1 : REDUCED_2));
+      end
+    end
+  end
+  // Helper invariants for the induction: the judge's vote record is within the
+  // property's count (the judge counts only fresh readings).
+  always @(*) begin
+    if (f_past_valid && dual) begin
+      assert (voted_reg == {f_other_heads, f_keep_heads});
+      assert (anchor_reg == f_anchor && lo_reg == f_lo && hi_reg == f_hi);
+    end
+    if (f_past_valid) assert (vote_keep == f_vote_keep && vote_other == f_vote_other);
+  end
+  integer f_k;
+  always @(*) begin
+    if (f_past_valid) for (f_k = 0; f_k < DUAL_VOTES; f_k = f_k + 1) begin
+      if (dual) assert (votes_keep_reg[f_k] == (f_keep_n > f_k));
+      if (dual) assert (votes_other_reg[f_k] == (f_other_n > f_k));
+    end
+    if (f_past_valid) for (f_k = 1; f_k < DUAL_VOTES; f_k = f_k + 1) begin
+      if (votes_keep_reg[f_k]) assert (votes_keep_reg[f_k - 1]);
+      if (votes_other_reg[f_k]) assert (votes_other_reg[f_k - 1]);
+    end
+  end
+  // Every mode and every documented transition is reachable.
+  always @(posedge clk) begin
+    if (f_past_valid && !rst && !f_rst_prev) begin
+      cover (f_mode_prev == ACQUIRE && mode == NORMAL);
+      cover (f_mode_prev == ACQUIRE && mode == REDUCED_1);
+      cover (f_mode_prev == ACQUIRE && mode == REDUCED_2);
+      cover (f_mode_prev == NORMAL && mode == REDUCED_1);          // track 2 lost support
+      cover (f_mode_prev == REDUCED_1 && mode == NORMAL && !f_dual_prev);  // return to normal
+      cover (f_mode_prev == REDUCED_2 && mode == NORMAL && !f_dual_prev);
+      cover (f_valid_prev && mode == INCREMENTAL && !dual);        // the offset dropped
+      cover (f_mode_prev == INCREMENTAL && !f_dual_prev && mode == NORMAL);  // a new lock
+      cover (!f_dual_prev && dual);                                // a missed state
+      cover (f_dual_prev && mode == NORMAL && offset == f_offset_prev);  // the count was right
+      cover (f_dual_prev && mode == NORMAL && offset != f_offset_prev);  // one slot the other way
+      cover (f_dual_prev && !dual && mode == INCREMENTAL);         // undecided: dropped
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -102,6 +102,76 @@ module prenc_position #(
   assign slot_out      = slot_d3_reg;
   assign quarter_out   = quarter_d3_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_position.sby), on the registers after each clock: the
+  // count in quarters (4 slot + q) follows the decoder one clock later, one quarter
+  // per legal step in its direction and two in the last legal direction after an
+  // illegal transition; an event is flagged exactly when the slot moves; the delayed
+  // outputs are the count DECISION_DELAY = 3 clocks earlier.
+  reg f_past_valid = 1'b0;
+  reg f_rst_prev;
+  reg [N+1:0] f_hyb_prev;
+  reg         f_step_prev;
+  reg         f_cw_prev;
+  reg         f_illegal_prev;
+  reg [1:0]   f_quarter_prev;
+  always @(posedge clk) begin
+    f_past_valid   <= 1'b1;
+    f_rst_prev     <= rst;
+    f_hyb_prev     <= {slot_reg, quarter_reg};
+    f_step_prev    <= step;
+    f_cw_prev      <= step_cw;
+    f_illegal_prev <= illegal;
+    f_quarter_prev <= quarter;
+  end
+  initial assume (rst);
+  // The decoder's contract (formal/prenc_quadrature.sby): a step moves the quarter by
+  // one in its direction, an illegal transition by two, otherwise it holds.
+  always @(*) begin
+    assume (!(step && illegal));
+    if (f_past_valid && !f_rst_prev) begin
+      if (step) assume (quarter == (step_cw ? quarter_reg + 1'b1 : quarter_reg - 1'b1));
+      else if (illegal) assume (quarter == quarter_reg + 2'd2);
+      else assume (quarter == quarter_reg);
+    end
+  end
+  wire [N+1:0] f_hyb = {slot_reg, quarter_reg};
+  reg  [N+1:0] f_hyb_d1;
+  reg  [N+1:0] f_hyb_d2;
+  reg  [N+1:0] f_hyb_d3;
+  reg  [2:0]   f_since_rst = 3'd0;
+  always @(posedge clk) begin
+    {f_hyb_d3, f_hyb_d2, f_hyb_d1} <= {f_hyb_d2, f_hyb_d1, f_hyb};
+    f_since_rst <= rst ? 3'd0 : (f_since_rst == 3'd7) ? 3'd7 : f_since_rst + 1'b1;
+  end
+  always @(*) begin
+    if (f_past_valid && f_rst_prev) assert (f_hyb == {N+2{1'b0}} && !up && !down && !ev_illegal);
+    // The first clock out of reset loads the decoder's quarter; then it moves.
+    if (f_since_rst >= 3'd2) begin
+      if (f_step_prev) begin
+        assert (f_hyb == (f_cw_prev ? f_hyb_prev + 1'b1 : f_hyb_prev - 1'b1));
+      end else if (f_illegal_prev) begin
+        assert (f_hyb == (f_cw_prev ? f_hyb_prev + 2'd2 : f_hyb_prev - 2'd2));
+      end else begin
+        assert (f_hyb == f_hyb_prev);
+      end
+      assert (up == (slot_reg == f_hyb_prev[N+1:2] + 1'b1) && (up || down || !ev_illegal ||
+              slot_reg == f_hyb_prev[N+1:2]));
+      assert (down == (slot_reg == f_hyb_prev[N+1:2] - 1'b1));
+      assert (ev_illegal == f_illegal_prev && ev_illegal_cw == f_cw_prev);
+    end
+    if (f_past_valid && !f_rst_prev) assert (quarter_reg == f_quarter_prev);
+    if (f_since_rst >= 3'd3) assert ({slot_out, quarter_out} == f_hyb_d3);
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (up && ev_illegal);
+      cover (down && ev_illegal);
+      cover (slot_reg == {N{1'b1}} && quarter_reg == 2'd3);
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

@@ -83,6 +83,59 @@ module prenc_turns #(
   assign full   = full_reg;
   assign placed = placed_reg;
 
+`ifdef FORMAL
+  // Properties (formal/prenc_turns.sby): against a disc that turns by at most one
+  // position step a clock (its multi-turn place f_true, chosen by the solver), read
+  // as `position` whenever valid (any pattern of valid), with a count that moves
+  // with it while the position is not valid (while valid it may jump anywhere: missed
+  // states are forgiven then): from the first valid position on, `full` is the disc's
+  // multi-turn place (one clock later) less its place at that first position, plus
+  // that position: the turns accumulate both ways and survive every loss of valid.
+  // `placed` tells whether a valid position was seen since reset.
+  reg f_past_valid = 1'b0;
+  reg f_rst_prev;
+  (* anyseq *)   reg [1:0]          f_move;  // 0 hold, 1 CW, 3 CCW (2: hold)
+  (* anyseq *)   reg [POS_BITS-1:0] f_new_offset;  // the count's slip, while valid
+  reg [POS_BITS-1:0] f_offset_prev;
+  wire [POS_BITS-1:0] f_count_offset = valid ? f_new_offset : f_offset_prev;
+  reg f_seen;  // a valid position since reset
+  reg [W-1:0] f_true;
+  reg [W-1:0] f_true_prev;
+  reg [W-1:0] f_k;  // full - f_true from the first valid position on
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_rst_prev   <= rst;
+    f_true       <= f_true + ((f_move == 2'd1) ? {{(W - 1){1'b0}}, 1'b1} :
+                              (f_move == 2'd3) ? {W{1'b1}} : {W{1'b0}});
+    f_true_prev  <= f_true;
+    if (valid && !placed_reg) f_k <= {{TURN_BITS{1'b0}}, position} - f_true;
+    f_offset_prev <= f_count_offset;
+    f_seen        <= !rst && (f_seen || valid);
+  end
+  initial assume (rst);
+  always @(*) begin
+    if (valid) assume (position == f_true[POS_BITS-1:0]);
+    assume (count == f_true[POS_BITS-1:0] + f_count_offset);
+  end
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      assert (f_true == f_true_prev || f_true == f_true_prev + 1'b1 ||
+              f_true == f_true_prev - 1'b1);
+      if (placed_reg) assert (full_reg == f_true_prev + f_k);
+      if (placed_reg) assert (f_k[POS_BITS-1:0] == {POS_BITS{1'b0}});  // whole turns
+      assert (count_prev == f_true_prev[POS_BITS-1:0] + f_offset_prev);
+    end
+    if (f_past_valid && f_rst_prev) assert (!placed_reg && full_reg == {W{1'b0}});
+    if (f_past_valid) assert (placed_reg == f_seen);
+  end
+  always @(posedge clk) begin
+    if (f_past_valid && !rst && placed_reg) begin
+      cover (turns == 2);
+      cover (turns == {TURN_BITS{1'b1}});  // -1: counted down past the first turn
+    end
+  end
+`endif
+
 endmodule
 
 `resetall

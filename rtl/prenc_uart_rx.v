@@ -176,7 +176,11 @@ module prenc_uart_rx #(
       else assume (rx);
     end
     if (f_past_valid && !f_rst_prev) begin
-      if (f_high >= F_IDLE) assert (state == IDLE);
+      if (f_high >= F_IDLE) assert (state == IDLE && !busy);
+      // Busy from the start bit's middle to the stop bit's sample.
+      if (f_sending && f_t >= 8'd3 + CLKS_PER_BIT / 2 && f_t <= 8'd2 + 9 * CLKS_PER_BIT) begin
+        assert (busy);
+      end
       if (state == BITS) assert (bit_index <= 4'd8 && timer <= FULL);
       if (state == START) assert (timer <= HALF);
       if (f_high >= 8'd2) assert (rx_q2);
