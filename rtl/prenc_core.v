@@ -427,6 +427,112 @@ module prenc_core #(
   assign track1_valid = pos_valid & supported[0];
   assign track2_valid = pos_valid & supported[1];
 
+`ifdef FORMAL
+  // Properties (formal/prenc_core.sby, bounded from reset: the whole core from its
+  // pins), composed with the blocks' proofs (the judge's evidence, the count).
+  reg f_past_valid = 1'b0;
+  reg [3:0] f_since_rst = 4'd0;
+  reg [2:0] f_rst_run = 3'd0;  // clocks of reset so far (up to 7), 0 at power-up
+  always @(posedge clk) begin
+    f_past_valid <= 1'b1;
+    f_since_rst  <= rst ? 4'd0 : (f_since_rst == 4'd15) ? 4'd15 : f_since_rst + 1'b1;
+    f_rst_run    <= !rst ? 3'd0 : (f_rst_run == 3'd7) ? f_rst_run : f_rst_run + 1'b1;
+  end
+  // Every reset, the one at power-up too (the flops start anywhere), lasts the
+  // documented 4 clocks at least.
+  always @(*) begin
+    if (!f_past_valid || (f_rst_run != 3'd0 && f_rst_run < 3'd4)) assume (rst);
+  end
+  // The decoder's steps, delayed to meet the position (prenc_position: one clock to
+  // the count, DECISION_DELAY = 3 more to slot_out).
+  reg [3:0] f_step_d;
+  reg [3:0] f_cw_d;
+  reg [3:0] f_illegal_d;
+  reg [N+1:0] f_hyb_prev;
+  reg         f_valid_prev;
+  always @(posedge clk) begin
+    f_step_d     <= {f_step_d[2:0], step};
+    f_cw_d       <= {f_cw_d[2:0], step_cw};
+    f_illegal_d  <= {f_illegal_d[2:0], illegal};
+    f_hyb_prev   <= pos_hyb;
+    f_valid_prev <= pos_valid;
+  end
+  always @(*) begin
+    if (f_past_valid && f_since_rst >= 4'd6) begin
+      // While valid, the position moves only with the quadrature: one quarter per
+      // legal step, in its direction; an illegal transition clears pos_valid when the
+      // count shows it.
+      if (f_valid_prev && pos_valid) begin
+        assert (!f_illegal_d[3]);
+        if (f_step_d[3]) assert (pos_hyb == (f_cw_d[3] ? f_hyb_prev + 1'b1 : f_hyb_prev - 1'b1));
+        else assert (pos_hyb == f_hyb_prev);
+      end
+      if (f_illegal_d[3]) assert (!pos_valid);
+    end
+    if (f_past_valid && !rst) begin
+      assert (pos_valid == (mode == 3'd1 || mode == 3'd2 || mode == 3'd3));
+    end
+  end
+`ifdef F_DISC
+  // The pins read a disc (formal/prenc_disc_reference.vh, the datasheet's geometry):
+  // its hybrid position f_h moves at most one quarter a clock, or two at once (a missed
+  // state, A and B changing together) up to F_MISSED times; each head reads its bit,
+  // head 1 s(p) and head 2 s(p + N - 1), flipped (a misread) up to F_MISREADS times
+  // in all. The promise: a valid position is the disc's, at the core's latency.
+  `include "prenc_disc_reference.vh"
+  (* anyseq *) reg [1:0] f_move;   // 0 hold, 1 CW, 3 CCW, 2 two quarters (missed state)
+  (* anyseq *) reg       f_jump_cw;
+  (* anyseq *) reg [1:0] f_flip;   // misread head 2, head 1
+  reg [N+1:0] f_h = {N+2{1'b0}};
+  reg [3:0]   f_missed = 4'd0;
+  reg [3:0]   f_misread = 4'd0;
+  wire [N-1:0] f_p = f_h[N+1:2];
+  wire [1:0]   f_q = f_h[1:0];
+  wire [N-1:0] f_p2 = f_p + N[N-1:0] - 1'b1;
+  always @(posedge clk) begin
+    case (f_move)
+      2'd1:    f_h <= f_h + 1'b1;
+      2'd3:    f_h <= f_h - 1'b1;
+      2'd2:    f_h <= f_jump_cw ? f_h + 2'd2 : f_h - 2'd2;
+      default: f_h <= f_h;
+    endcase
+    if (f_move == 2'd2) f_missed <= f_missed + 1'b1;
+    f_misread <= f_misread + {3'd0, f_flip[0]} + {3'd0, f_flip[1]};
+  end
+  always @(*) begin
+    assume (sync_a == f_q[1] && sync_b == (f_q[1] == f_q[0]));
+    assume (head1 == (F_S[f_p] ^ f_flip[0]) && head2 == (F_S[f_p2] ^ f_flip[1]));
+    assume (f_missed <= `F_MISSED && f_misread <= `F_MISREADS);
+  end
+  // The pins of clock k are sampled by the edge that ends it; the outputs show that
+  // sample 6 + FILTER edges later, on clock k + 7 + FILTER.
+  localparam integer F_LATENCY = 7 + FILTER;
+  reg [N+1:0] f_h_d [0:F_LATENCY-1];
+  integer f_d;
+  always @(posedge clk) begin
+    f_h_d[0] <= f_h;
+    for (f_d = 1; f_d < F_LATENCY; f_d = f_d + 1) f_h_d[f_d] <= f_h_d[f_d - 1];
+  end
+  always @(*) begin
+    if (f_past_valid && f_since_rst >= F_LATENCY && pos_valid) begin
+      assert (pos_hyb == f_h_d[F_LATENCY - 1]);
+    end
+  end
+`endif
+  // From the pins: the first lock on both heads, on one head, the hypotheses of a
+  // missed state, a misread survived (cover traces: the whole reader at work).
+  always @(posedge clk) begin
+    if (f_past_valid && !rst) begin
+      cover (mode == 3'd1);
+      cover (mode == 3'd2);
+      cover (mode == 3'd3);
+      cover (dual);
+      // A misread counted, and the position kept in normal mode.
+      cover (mode == 3'd1 && (track1_errors != 0 || track2_errors != 0));
+    end
+  end
+`endif
+
 endmodule
 
 `resetall
