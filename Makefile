@@ -8,7 +8,8 @@
 #   make rom     the default conversion ROM into build/rom/
 #   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200]
 #                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/
-#   make formal  every formal proof of formal/*.sby (SymbiYosys, Yices; also in make test)
+#   make formal  every formal proof of formal/*.sby (SymbiYosys, Yices; also in make test);
+#                the cover traces kept in build/formal/covers/ (index.md)
 #   make mutate  mutants of each proven block, and how many the proofs kill
 #   make board-sim [ARGS="--profile reversals --misreads 0.01"]
 #                the virtual board: prenc_board on Verilator with its UART on a pty,
@@ -79,6 +80,7 @@ synth: $(STAMP)
 
 formal: $(STAMP)
 	@$(PY) -m pytest -q -n $(JOBS) tb/formal
+	@$(PY) scripts/formal_covers.py
 
 mutate: $(STAMP)
 	@$(PY) scripts/mutate.py --jobs $(JOBS) $(ARGS)

