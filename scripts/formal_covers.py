@@ -20,6 +20,8 @@ import shutil
 import sys
 from pathlib import Path
 
+from yosys_lines import file_line
+
 REPO = Path(__file__).resolve().parents[1]
 
 # Signals shown as a table per block (top-level names in the trace).
@@ -31,19 +33,6 @@ TABLES = {
 
 REACHED = re.compile(r"Reached cover statement in step (\d+) at \S+: (\S+?):(\d+)\.")
 WRITING = re.compile(r"Writing trace to VCD file: (\S+\.vcd)")
-
-
-def source_line(path: Path, yosys_line: int) -> int:
-    """The line of `path` that Yosys calls `yosys_line`. Yosys's preprocessor counts each
-    `resetall as three lines (YoWASP Yosys 0.70), so its line numbers run 2 ahead after
-    each one; this maps them back."""
-    shift = 0
-    for number, line in enumerate(path.read_text().splitlines(), 1):
-        if number + shift == yosys_line:
-            return number
-        if line.strip().startswith("`resetall"):
-            shift += 2
-    return yosys_line
 
 
 def read_vcd(path: Path, names: list[str]) -> list[dict[str, str]]:
@@ -119,7 +108,7 @@ def main(argv=None) -> int:
                 pending = None
                 text = "?"
                 if source in sources:
-                    number = source_line(sources[source], number)
+                    number = file_line(sources[source], number)
                     text = sources[source].read_text().splitlines()[number - 1].strip()
                 target = args.out / block / f"line{number}.vcd"
                 target.parent.mkdir(parents=True, exist_ok=True)

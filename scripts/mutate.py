@@ -36,6 +36,8 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+from yosys_lines import yosys_numbers
+
 REPO = Path(__file__).resolve().parents[1]
 FORMAL = REPO / "formal"
 OUT = REPO / "build" / "mutate"
@@ -57,11 +59,8 @@ def sections(text: str) -> dict[str, list[str]]:
 
 def formal_lines(path: Path) -> set[int]:
     """Line numbers inside `ifdef FORMAL ... `endif of a source, as Yosys numbers them."""
-    lines, inside, shift = set(), False, 0
-    for number, line in enumerate(path.read_text().splitlines(), 1):
-        if line.strip().startswith("`resetall"):
-            shift += 2  # Yosys counts a `resetall as three lines: formal_covers.source_line
-        number += shift
+    lines, inside = set(), False
+    for line, number in zip(path.read_text().splitlines(), yosys_numbers(path)):
         if line.strip().startswith("`ifdef FORMAL"):
             inside = True
         if inside:
@@ -82,7 +81,7 @@ def task_script(lines: list[str], task: str) -> list[str]:
     out = []
     for line in lines:
         m = re.match(r"^(\w+):\s*(.*)$", line)
-        if m and not line.strip().startswith(("read", "chparam", "prep", "memory")):
+        if m:
             if m.group(1) == task:
                 out.append(m.group(2))
         elif line.strip():
