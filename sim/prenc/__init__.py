@@ -7,7 +7,7 @@ this package, never the other way round. One module per concept:
 - lfsr       maximal-length LFSR sequences, primitive feedback sets
 - debruijn   the disc code: de Bruijn completion, windows, next-bit laws
 - rom        conversion ROM tables and track patterns in FPGA vendors' formats
-- converter  model of rtl/prenc_converter.v, and the serial converter it replaces
+- converter  model of rtl/core/prenc_converter.v, and the serial converter it replaces
 - encoder    the virtual encoder: disc, heads, sync track, event stream
 - trajectory disc motion sampled on the reader's clock
 - faults     composable, seeded faults of the datasheet

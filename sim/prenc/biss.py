@@ -2,7 +2,7 @@
 """BiSS-C, point to point, single-cycle sensor data: the master's side.
 
 Written from the protocol's description (docs/biss-c.md), not from the slave
-(rtl/prenc_biss.v), so that a test of the slave against it means something:
+(rtl/board/prenc_biss.v), so that a test of the slave against it means something:
 
 - idle: MA and SLO high; the master starts a frame with a falling edge of MA;
 - the slave answers the second rising edge of MA with Ack (SLO low), then a start

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Code word -> slot conversion: the model of rtl/prenc_converter.v, and the serial
+"""Code word -> slot conversion: the model of rtl/core/prenc_converter.v, and the serial
 method of the literature it replaces.
 
 `Converter` is a registered ROM read: a word presented with `word_valid` on one

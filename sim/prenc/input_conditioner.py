@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_input_conditioner.v: two-flop synchronizer, then glitch filter.
+"""Model of rtl/core/prenc_input_conditioner.v: two-flop synchronizer, then glitch filter.
 
 Clock-accurate: `clock()` takes the inputs before a rising edge and returns the
 outputs after it. A new level reaches the output only after the synchronized input

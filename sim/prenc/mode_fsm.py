@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_mode_fsm.v: the judge of the offset, the modes and pos_valid.
+"""Model of rtl/core/prenc_mode_fsm.v: the judge of the offset, the modes and pos_valid.
 
 The position is the slot count plus an offset; this machine decides the offset and
 whether it is proven. It sees, one clock after the track words, each strobe with

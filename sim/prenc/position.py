@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_position.v: the slot count, the reader's events, and the output.
+"""Model of rtl/core/prenc_position.v: the slot count, the reader's events, and the output.
 
 From the quadrature decoder's registered step (clock t) it registers, on t+1, the
 slot count and the event the rest of the core sees on that clock: `up` (a CW step

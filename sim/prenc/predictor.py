@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_predictor.v: what each head must read at a strobe.
+"""Model of rtl/core/prenc_predictor.v: what each head must read at a strobe.
 
 From the word W(p) before the strobe and its direction:
   CW to p+1:   head 2 = forward law of W(p) = s(p+N),  head 1 = s(p+1)

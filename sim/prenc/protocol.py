@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """The host protocol between the board and the PC (docs/host-protocol.md).
 
-The Python side of rtl/prenc_frame_rx.v, rtl/prenc_frame_tx.v and the payload
-layouts of rtl/prenc_host_link.v:
+The Python side of rtl/board/prenc_frame_rx.v, rtl/board/prenc_frame_tx.v and the payload
+layouts of rtl/board/prenc_host_link.v:
 
     frame = A5 | TYPE | LEN | PAYLOAD[LEN] | CRC16 (big-endian)
 
@@ -88,7 +88,7 @@ class Frame:
 
 @dataclass
 class FrameParser:
-    """Bytes in, checked frames out; the model of rtl/prenc_frame_rx.v."""
+    """Bytes in, checked frames out; the model of rtl/board/prenc_frame_rx.v."""
 
     max_len: int = ANSWER_MAX_LEN
     frames: int = 0

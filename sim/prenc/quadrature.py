@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_quadrature.v: quarter index, steps, illegal transitions.
+"""Model of rtl/core/prenc_quadrature.v: quarter index, steps, illegal transitions.
 
 q = {A, A xnor B}: (A,B) = (0,1), (0,0), (1,0), (1,1) give q = 0, 1, 2, 3
 (datasheet). A change of q by +1 (mod 4) is a CW step, by -1 a CCW step, by 2 an

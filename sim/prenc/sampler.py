@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_sampler.v: mid-slot strobes with direction and head readings.
+"""Model of rtl/core/prenc_sampler.v: mid-slot strobes with direction and head readings.
 
 A strobe is a CW step into q = 2 (A rose) or a CCW step into q = 1 (A fell). The
 heads are taken as they were at the input sample where A changed (delayed one

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_shift_register.v: the main code word from the leading head.
+"""Model of rtl/core/prenc_shift_register.v: the main code word from the leading head.
 
 CW to a new slot: shift left, head 2 enters as LSB; CCW: shift right, head 1 enters
 as MSB; a strobe at the same slot fills that end if unknown. `known` marks bits

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """SSI, the synchronous serial interface of absolute encoders: the controller's side.
 
-The model of what rtl/prenc_ssi.v sends, used by its testbench and documentation:
+The model of what rtl/board/prenc_ssi.v sends, used by its testbench and documentation:
 a frame is the position, MSB first, Gray-coded or binary, then an error bit
 (1 = the position is not valid).
 """

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_track_word.v: one head's code word in the reader's count space.
+"""Model of rtl/core/prenc_track_word.v: one head's code word in the reader's count space.
 
 Each head has its own N-slot window on the incremental slot count: the head's
 readings at counts base .. base+N-1, with `index` = count - base the head's place

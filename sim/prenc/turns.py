@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/prenc_turns.v: a multi-turn position from the single-turn one and
+"""Model of rtl/board/prenc_turns.v: a multi-turn position from the single-turn one and
 the incremental count.
 
 `full` = turns * 2^POS_BITS + position, turn 0 at the first valid position after

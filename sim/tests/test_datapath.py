@@ -18,7 +18,7 @@ from prenc.encoder import Disc, VirtualEncoder
 from prenc.faults import ContaminatedSlot
 from prenc.trajectory import Trajectory
 
-RESET = 4  # the chain needs rst for >= 4 clocks (see rtl/prenc_quadrature.v)
+RESET = 4  # the chain needs rst for >= 4 clocks (see rtl/core/prenc_quadrature.v)
 
 
 def dithering_walk(seed: int, filter_len: int = 0, clocks: int = 20000) -> Trajectory:

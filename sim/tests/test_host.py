@@ -2,7 +2,7 @@
 """prenc host: the user's errors, one line each, and CRC errors that never stop it.
 
 The board here is a small Python responder on a real pseudo-terminal (the RTL
-board is tested end to end in tb/prenc_board); it lets the test choose what a
+board is tested end to end in tb/board/prenc_board); it lets the test choose what a
 board cannot be made to do: speak another protocol version, say nothing, or
 corrupt an answer.
 """

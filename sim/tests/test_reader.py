@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """The reader model (prenc.reader.Reader and its stages) against the truth and the
-disc's arithmetic; the RTL is compared with it clock by clock in tb/prenc_core."""
+disc's arithmetic; the RTL is compared with it clock by clock in tb/core/prenc_core."""
 
 from __future__ import annotations
 

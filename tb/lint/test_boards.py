@@ -35,12 +35,12 @@ def test_board_builds_and_meets_timing(board):
 def test_a_missing_rom_fails_the_build():
     out = SIM_BUILD / "boards" / "missing-rom"
     with pytest.raises(synth.FlowError, match="ROM file .* not found"):
-        synth.build("prenc_core", synth.file_list(synth.RTL / "prenc_core.f"), "ice40-hx8k",
+        synth.build("prenc_core", synth.file_list(synth.RTL / "core" / "prenc_core.f"), "ice40-hx8k",
                     {"N": 10, "ROM_FILE": out / "no_such_rom.hex"}, 50.0, out, bitstream=False)
 
 
 def test_a_clock_that_is_not_met_fails_the_build():
     out = SIM_BUILD / "boards" / "too-fast"
     with pytest.raises(synth.FlowError, match="timing failed: clock .* needs 400.0 MHz"):
-        synth.build("prenc_ssi", synth.file_list(synth.RTL / "prenc_ssi.f"), "ice40-hx8k",
+        synth.build("prenc_ssi", synth.file_list(synth.RTL / "board" / "prenc_ssi.f"), "ice40-hx8k",
                     {"WIDTH": 32}, 400.0, out, bitstream=False)

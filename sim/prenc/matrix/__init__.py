@@ -13,5 +13,5 @@ symbols: 2^(n*n) positions, read by a small image sensor.
     paper     the paper's 16-position example, checked; Table I of angles
     rom       conversion ROMs in the formats of `prenc rom`
     sensor    an image sensor looking at the tracks: blur, noise, sub-cell offsets
-    reader    the integer model of rtl/prenc_matrix_reader.v
+    reader    the integer model of rtl/matrix/prenc_matrix_reader.v
 """

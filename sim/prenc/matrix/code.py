@@ -19,7 +19,7 @@ Bit order (the ROM address of a window, and the RTL's):
 
 The sequence of data symbols is the lexicographically least de Bruijn sequence of
 order n over 2^b symbols, from the FKM algorithm (concatenating in order the Lyndon
-words whose length divides n); rtl/prenc_matrix_fkm.v generates the same one.
+words whose length divides n); rtl/matrix/prenc_matrix_fkm.v generates the same one.
 """
 
 from __future__ import annotations
@@ -43,7 +43,7 @@ def prenecklaces(k: int, n: int) -> Iterator[tuple[list[int], int]]:
     """Every prenecklace a[0..n-1] over k symbols in lexicographic order, with the
     length p of its longest Lyndon prefix (Ruskey's iterative FKM step).
 
-    This is the loop rtl/prenc_matrix_fkm.v runs: find the last symbol that is not
+    This is the loop rtl/matrix/prenc_matrix_fkm.v runs: find the last symbol that is not
     k-1, increment it, fill the rest periodically from the prefix."""
     a = [0] * n
     p = 1
@@ -183,7 +183,7 @@ class MatrixCode:
 
 
 def build_clocks(n: int, checksum: bool = False) -> int:
-    """Clocks from reset to `ready` of rtl/prenc_matrix_table.v with TABLE = "generator":
+    """Clocks from reset to `ready` of rtl/matrix/prenc_matrix_table.v with TABLE = "generator":
     the FKM generator emits one symbol per clock and spends one clock on each step to
     the next prenecklace (P of them, the last step finding none); N-1 closing zeros
     follow, then ready registers."""

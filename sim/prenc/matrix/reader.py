@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""The matrix-code reader: the integer model of rtl/prenc_matrix_reader.v.
+"""The matrix-code reader: the integer model of rtl/matrix/prenc_matrix_reader.v.
 
 From one frame: the darkest and brightest pixel of the tracks' rows, the edge
 energy of each phase x mod cell (the sum, over those rows, of the steps

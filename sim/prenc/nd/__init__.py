@@ -14,5 +14,5 @@ bits. d = 1 is a de Bruijn-like code; with d >= 3 a reader can correct a bit err
     table        Table 1 of the paper, extended
     phasing      parallel sequences: the phasing of equation 1; the dual-track disc
     imaging      a camera looking at a cylinder that carries the sequences
-    correlator   the integer correlation decoder (the model of rtl/prenc_correlator.v)
+    correlator   the integer correlation decoder (the model of rtl/nd/prenc_correlator.v)
 """

@@ -200,7 +200,7 @@ def add_parser(sub) -> None:
     image.add_argument("--json", action="store_true")
     image.set_defaults(func=cmd_image)
 
-    rom = cmds.add_parser("rom", help="the window ROM of rtl/prenc_correlator.v")
+    rom = cmds.add_parser("rom", help="the window ROM of rtl/nd/prenc_correlator.v")
     rom.add_argument("--sequence", action="append", required=True, help="a track's sequence (repeat per track)")
     rom.add_argument("--phases", type=_int_list, help="phase of each track (default all 0)")
     rom.add_argument("--n", type=int, required=True, help="window length n")

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""The correlation decoder: the model of rtl/prenc_correlator.v, in the same integers.
+"""The correlation decoder: the model of rtl/nd/prenc_correlator.v, in the same integers.
 
 A line or area sensor sees a whole reading at once: for each of m tracks, n bits, p
 samples per bit, each sample a B-bit intensity x[j][i][q]. The decoder centres every

@@ -1,0 +1,9 @@
+// SPDX-License-Identifier: Apache-2.0
+// Sources of prenc_board (verilator -F <this file>), relative to this folder;
+// a line `-F <list>` includes another top's list, relative to its own folder.
+-F ../core/prenc_core.f
+-F prenc_host_link.f
+prenc_ssi.v
+prenc_turns.v
+prenc_biss.v
+prenc_board.v

@@ -1,3 +1,0 @@
-// SPDX-License-Identifier: Apache-2.0
-// Sources of prenc_quadrature, relative to this folder (verilator -F, or -f from rtl/).
-prenc_quadrature.v
