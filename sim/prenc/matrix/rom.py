@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 
-from ..rom import FORMATS, format_rom, write_atomically
+from ..codes.rom import FORMATS, format_rom, write_atomically
 from .code import MatrixCode
 
 

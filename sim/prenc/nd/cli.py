@@ -148,7 +148,7 @@ def cmd_image(args) -> None:
 
 
 def cmd_rom(args) -> None:
-    from ..rom import write_atomically
+    from ..codes.rom import write_atomically
     from .correlator import rom_text, rom_windows
 
     seqs = [as_bits(s) for s in args.sequence]

@@ -20,8 +20,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..debruijn import debruijn_sequence
-from ..lfsr import is_primitive, msequence, polynomial
+from ..codes.debruijn import debruijn_sequence
+from ..codes.lfsr import is_primitive, msequence, polynomial
 from .sequence import to_text
 
 

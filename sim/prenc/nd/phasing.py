@@ -23,8 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..debruijn import debruijn_sequence
-from ..encoder import default_shift
+from ..codes.debruijn import debruijn_sequence
+from ..virtual.encoder import default_shift
 from .sequence import as_bits, pairwise_distances
 
 

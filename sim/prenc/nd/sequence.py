@@ -3,7 +3,7 @@
 
 A sequence is a 1-D array (or string) of bits s(0..K-1). Its window at position i is
 W(i) = (s(i), ..., s(i+n-1)) read cyclically, with s(i) as the MSB of the window's
-value, the same convention as the disc's code (`prenc.debruijn.window_values`).
+value, the same convention as the disc's code (`prenc.codes.debruijn.window_values`).
 When K < n a window wraps around more than once; the definition still holds.
 
 `min_distance` is the check every reported sequence passes before it is printed: it

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_biss read by a BiSS-C master at 1, 2.5, 3.3, 5 and 10 MHz (a 50 MHz design clock).
 
-The master (this testbench, with prenc.biss) is written from the protocol, not from
+The master (this testbench, with prenc.board.biss) is written from the protocol, not from
 the slave: it clocks MA, records every change of SLO, finds the Ack and the start
 bit, measures the line delay there and samples each later bit that long after its
 rising edge (BiSS line-delay compensation). Expected values: the data, nE and nW
@@ -20,7 +20,7 @@ from cocotb.triggers import ClockCycles, FallingEdge, ReadOnly, Timer
 
 from biss_master import Master
 from common import PERIOD_NS, rng, start_clock_and_reset
-from prenc import biss
+from prenc.board import biss
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_biss"

@@ -5,7 +5,7 @@ pseudo-terminal on its UART.
 Shared by the board's tests and by the virtual board (`make board-sim`):
 
     prenc host (pyserial) <-> /dev/pts/N <-> Bridge <-> uart_rx / uart_tx pins
-    prenc.encoder.VirtualEncoder (a trajectory, faults) -> drive_encoder -> encoder pins
+    prenc.virtual.encoder.VirtualEncoder (a trajectory, faults) -> drive_encoder -> encoder pins
 
 The bridge only moves bits between the pty and the pins at the UART's bit rate, and
 records the clock of every answer's snapshot (prenc_host_link's `snapshot`).
@@ -24,7 +24,7 @@ from cocotb.triggers import RisingEdge, Timer
 from cocotb.utils import get_sim_time
 
 from common import PERIOD_NS, start_clock_and_reset
-from prenc.encoder import Disc, VirtualEncoder
+from prenc.virtual.encoder import Disc, VirtualEncoder
 from uart import UartSink, UartSource
 
 PINS = ("head1", "head2", "sync_a", "sync_b")

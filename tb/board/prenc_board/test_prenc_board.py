@@ -4,7 +4,7 @@ to the board top on Verilator while the virtual encoder turns the disc.
 
     prenc host (subprocess, pyserial) <-> /dev/pts/N <-> this bridge <-> uart_rx/uart_tx pins
 
-No mock: the host runs as the user runs it (`python -m prenc.cli host ...`), the
+No mock: the host runs as the user runs it (`python -m prenc.cli.main host ...`), the
 bytes cross a real pty, and the bridge only moves bits between the pty and the
 pins at the UART's bit rate. The board runs as on the iCEBreaker (24 MHz clock,
 3 Mbaud).
@@ -32,9 +32,9 @@ from cocotb.triggers import Timer
 
 from board_harness import Bridge, drive_encoder, start_board
 from common import PERIOD_NS
-from prenc import protocol
-from prenc.encoder import Disc
-from prenc.scenarios import core_latency
+from prenc.board import protocol
+from prenc.virtual.encoder import Disc
+from prenc.virtual.scenarios import core_latency
 from runner import REPO, SIM_BUILD, rom_file, run
 
 TOPLEVEL = "prenc_board"
@@ -70,7 +70,7 @@ class Truth:
 
 async def host(bridge: Bridge, *args: str, timeout_s: float = 120.0) -> subprocess.CompletedProcess:
     """Run `prenc host ...` while the simulation keeps going; return when it exits."""
-    cmd = [sys.executable, "-m", "prenc.cli", "host", *args]
+    cmd = [sys.executable, "-m", "prenc.cli.main", "host", *args]
     env = dict(os.environ, PYTHONPATH=str(REPO / "sim"))
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     t0 = time.monotonic()

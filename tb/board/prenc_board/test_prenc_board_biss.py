@@ -4,7 +4,7 @@
 The disc (N = 6, 64 slots) rests, turns 3.5 times CW, then 6 times CCW, so the
 multi-turn count goes up across the zero crossing and down below turn 0; head 2
 sticks at 0 for the last four turns, which puts the core in a reduced mode (nW). A master
-(prenc.biss, written from the protocol) reads frame after frame at 4 MHz and 1 MHz
+(prenc.board.biss, written from the protocol) reads frame after frame at 4 MHz and 1 MHz
 (6 and 24 clocks of the 24 MHz design clock). Every frame must carry, with a good
 CRC, what the board had on the clock before its latch (the frame's first falling
 edge): turns, pos_hyb, nE = pos_valid, nW = not a reduced mode. Every valid frame
@@ -22,10 +22,10 @@ from cocotb.utils import get_sim_time
 from biss_master import Master
 from board_harness import drive_encoder, start_board
 from common import PERIOD_NS
-from prenc import biss
-from prenc.encoder import Disc
-from prenc.faults import DeadHead
-from prenc.scenarios import core_latency
+from prenc.board import biss
+from prenc.virtual.encoder import Disc
+from prenc.virtual.faults import DeadHead
+from prenc.virtual.scenarios import core_latency
 from runner import rom_file, run
 
 TOPLEVEL = "prenc_board"

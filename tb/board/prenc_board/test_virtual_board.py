@@ -3,7 +3,7 @@
 runs) in its own process, and `prenc host read` on the pty it prints.
 
 Each answer carries the board's time in microseconds since reset; the virtual
-board's disc turns at a known speed (prenc.profiles), so the answer must equal the
+board's disc turns at a known speed (prenc.virtual.profiles), so the answer must equal the
 true position at that time, less the core's latency, within the microsecond's
 resolution. The virtual board also reports how fast it simulates.
 """
@@ -19,9 +19,9 @@ import time
 
 import numpy as np
 
-from prenc.encoder import Disc
-from prenc.profiles import profile
-from prenc.scenarios import core_latency
+from prenc.virtual.encoder import Disc
+from prenc.virtual.profiles import profile
+from prenc.virtual.scenarios import core_latency
 from runner import REPO, SIM_BUILD
 
 N, CLK_MHZ, FILTER, RPM = 10, 24, 2, 600
@@ -29,7 +29,7 @@ RESET_CLOCKS = 6.5  # the virtual board holds reset 6 clocks; time_us starts aft
 
 
 def host(port: str, *args: str) -> dict:
-    cmd = [sys.executable, "-m", "prenc.cli", "host", "read", "--port", port, "--timeout", "20",
+    cmd = [sys.executable, "-m", "prenc.cli.main", "host", "read", "--port", port, "--timeout", "20",
            "--json", *args]
     env = dict(os.environ, PYTHONPATH=str(REPO / "sim"))
     out = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=120)

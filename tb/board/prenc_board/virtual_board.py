@@ -6,8 +6,8 @@ Started by `make board-sim` (scripts/board_sim.py), which passes the settings in
 environment variable PRENC_BOARD_SIM (JSON):
 
     n, clk_hz, baud        the board's parameters
-    profile, rpm           the speed profile (prenc.profiles)
-    misreads, dead_head, missed_states, seed   faults (prenc.faults); misreads and
+    profile, rpm           the speed profile (prenc.virtual.profiles)
+    misreads, dead_head, missed_states, seed   faults (prenc.virtual.faults); misreads and
                            missed states are drawn anew for each chunk of encoder
                            signal (board_harness.CHUNK clocks)
     seconds                board time to simulate (0: until stopped)
@@ -30,9 +30,9 @@ from cocotb.utils import get_sim_time
 
 from board_harness import Bridge, drive_encoder, start_board
 from common import PERIOD_NS
-from prenc.encoder import Disc
-from prenc.faults import DeadHead, MissedQuadratureState, RandomMisreads
-from prenc.profiles import profile
+from prenc.virtual.encoder import Disc
+from prenc.virtual.faults import DeadHead, MissedQuadratureState, RandomMisreads
+from prenc.virtual.profiles import profile
 
 REPORT_S = 5.0  # wall-clock seconds between speed reports
 

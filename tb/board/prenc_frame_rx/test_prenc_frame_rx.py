@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""prenc_frame_rx fuzzed: random and corrupted byte streams, against prenc.protocol.FrameParser.
+"""prenc_frame_rx fuzzed: random and corrupted byte streams, against prenc.board.protocol.FrameParser.
 
 The stream mixes good frames, frames with errors the CRC-16 is guaranteed to catch
 (1 to 3 flipped bits, a burst of up to 16 bits), frames cut short, frames with LEN
@@ -21,8 +21,8 @@ import pytest
 from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import rng, start_clock_and_reset
-from prenc import protocol
-from prenc.protocol import FrameParser
+from prenc.board import protocol
+from prenc.board.protocol import FrameParser
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_frame_rx"

@@ -13,8 +13,8 @@ import os
 
 import cocotb
 
-from prenc import protocol
-from prenc.protocol import Kind
+from prenc.board import protocol
+from prenc.board.protocol import Kind
 from test_prenc_host_link import setup
 
 

@@ -2,7 +2,7 @@
 """prenc_host_link: the protocol over the UART pins, at 115200, 1 M and 3 Mbaud.
 
 Requests are sent bit by bit onto `rx` and answers decoded from `tx` with
-prenc.protocol (the host's own parser and layouts). Expected values: the core
+prenc.board.protocol (the host's own parser and layouts). Expected values: the core
 outputs the test drives, the protocol document's layouts, and the time base
 (CLK_HZ): every kind of answer, NACKs, corrupted requests counted and the next
 good one answered, CLEAR, and streaming at its period and back to back.
@@ -18,8 +18,8 @@ from cocotb.triggers import ClockCycles, RisingEdge, with_timeout
 from cocotb.utils import get_sim_time
 
 from common import PERIOD_NS, rng, start_clock_and_reset
-from prenc import protocol
-from prenc.protocol import Answer, FrameParser, Kind, Nack
+from prenc.board import protocol
+from prenc.board.protocol import Answer, FrameParser, Kind, Nack
 from runner import run
 from uart import UartSink, UartSource
 

@@ -3,7 +3,7 @@
 
 The controller (this testbench) drives ssi_clk with WIDTH + 2 pulses (+1 to see the line low) and samples
 ssi_data on each falling edge after the first, as an SSI master does. Expected
-values: prenc.ssi's frame (position at the first falling edge, Gray or binary,
+values: prenc.board.ssi's frame (position at the first falling edge, Gray or binary,
 error bit = not valid) and the protocol's timing: data low after the frame, high
 again one monoflop time after the last clock edge, a new latch only after it.
 """
@@ -15,7 +15,7 @@ import pytest
 from cocotb.triggers import ClockCycles, FallingEdge, ReadOnly, Timer
 
 from common import PERIOD_NS, rng, start_clock_and_reset
-from prenc import ssi
+from prenc.board import ssi
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_ssi"

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_turns: the multi-turn position, clock by clock against the model
-(prenc.turns), and against the truth of a random walk that crosses zero both ways,
+(prenc.board.turns), and against the truth of a random walk that crosses zero both ways,
 loses the position in stretches and misses quadrature states."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import cocotb
 import pytest
 
 from common import clock_and_check, rng, start_clock_and_reset
-from prenc.turns import Turns, random_walk
+from prenc.board.turns import Turns, random_walk
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_turns"

@@ -14,7 +14,7 @@ import cocotb
 from cocotb.clock import Clock
 from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
-from prenc.debruijn import Code
+from prenc.codes.debruijn import Code
 
 
 @cocotb.test()

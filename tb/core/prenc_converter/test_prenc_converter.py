@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_converter: every code word converts to the slot the disc code gives it.
 
-The expected values come from the Python model (`prenc.converter.Converter`,
-whose table is `prenc.debruijn.Code.positions`), never from the RTL. The ROM file
+The expected values come from the Python model (`prenc.core.converter.Converter`,
+whose table is `prenc.codes.debruijn.Code.positions`), never from the RTL. The ROM file
 is written by the same code as `prenc rom`.
 """
 
@@ -15,8 +15,8 @@ import pytest
 from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import clock_and_check, rng, start_clock_and_reset
-from prenc.converter import CONVERTER_LATENCY, Converter
-from prenc.debruijn import Code
+from prenc.core.converter import CONVERTER_LATENCY, Converter
+from prenc.codes.debruijn import Code
 from runner import SIM_BUILD, SIMULATORS, rom_file, run
 from yosys import synthesize
 

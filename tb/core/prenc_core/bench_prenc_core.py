@@ -4,7 +4,7 @@
 Seeded segments of a random walk with a random mix of the datasheet's faults
 (misreads, contaminated cells, a dead head, missed quadrature states, bounce on
 the heads) drive prenc_core until $BENCH_STROBES strobes have been made; each
-segment is judged against the true angle (prenc.scenarios.judge). Writes the
+segment is judged against the true angle (prenc.virtual.scenarios.judge). Writes the
 counts to $BENCH_OUT.
 """
 
@@ -16,12 +16,12 @@ import os
 import numpy as np
 import cocotb
 
-from prenc.encoder import Disc, VirtualEncoder
-from prenc.faults import Bounce, ContaminatedSlot, DeadHead, MissedQuadratureState, RandomMisreads
-from prenc.reader import Reader
-from prenc.debruijn import Code
-from prenc.scenarios import core_latency, judge, max_speed
-from prenc.trajectory import Trajectory
+from prenc.virtual.encoder import Disc, VirtualEncoder
+from prenc.virtual.faults import Bounce, ContaminatedSlot, DeadHead, MissedQuadratureState, RandomMisreads
+from prenc.core.reader import Reader
+from prenc.codes.debruijn import Code
+from prenc.virtual.scenarios import core_latency, judge, max_speed
+from prenc.virtual.trajectory import Trajectory
 from test_prenc_core import RESET, run_core
 
 

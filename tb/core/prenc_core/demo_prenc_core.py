@@ -12,7 +12,7 @@ import cocotb
 from cocotb.triggers import FallingEdge, Timer
 
 from common import PERIOD_NS
-from prenc.core_demo import RESOLUTION_12_FROM, demo_run
+from prenc.cli.core_demo import RESOLUTION_12_FROM, demo_run
 from test_prenc_core import run_core
 
 

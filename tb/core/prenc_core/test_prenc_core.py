@@ -1,19 +1,19 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_core end to end: the virtual encoder drives the pins through every scenario
-of prenc.scenarios (start-up at rest and moving, both directions, reversals,
+of prenc.virtual.scenarios (start-up at rest and moving, both directions, reversals,
 acceleration, each fault of the datasheet alone and combined).
 
 Two independent expectations, neither from the RTL:
 - the truth: whenever pos_valid is 1, pos_hyb (and pos_abs) equal the true
-  position 6 + FILTER clocks earlier (prenc.scenarios.judge: within FILTER clocks
+  position 6 + FILTER clocks earlier (prenc.virtual.scenarios.judge: within FILTER clocks
   of it, as the filter removes true pulses shorter than FILTER, and within the
   clocks a fault on A or B held the pins off the truth);
-- the clock-level model prenc.reader.Reader: on every clock the same pos_valid and
+- the clock-level model prenc.core.reader.Reader: on every clock the same pos_valid and
   mode and, when valid, the same pos_hyb.
 Availability and the time in each mode are logged per scenario, with the seed;
 PRENC_SCENARIO_SEED=<seed> replays a scenario with the seed a failure printed.
 
-The goal scenarios (prenc.goals: issue 15's table, 12,000 to 18,000 clocks each) run
+The goal scenarios (prenc.virtual.goals: issue 15's table, 12,000 to 18,000 clocks each) run
 the same two checks, and at N = 10 (the table's disc) the share of clocks valid and
 the travel to the first valid position are asserted against the goals.
 """
@@ -31,11 +31,11 @@ from cocotb.clock import Clock
 from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import PERIOD_NS, drive_events, rng
-from prenc.debruijn import Code
-from prenc.goals import SHORT_OF_GOAL, first_valid_travel, goals
-from prenc.predictor import taps_mask
-from prenc.reader import Reader
-from prenc.scenarios import core_latency, judge, scenarios
+from prenc.codes.debruijn import Code
+from prenc.virtual.goals import SHORT_OF_GOAL, first_valid_travel, goals
+from prenc.core.predictor import taps_mask
+from prenc.core.reader import Reader
+from prenc.virtual.scenarios import core_latency, judge, scenarios
 from runner import rom_file, run
 
 TOPLEVEL = "prenc_core"

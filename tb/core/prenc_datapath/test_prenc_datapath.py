@@ -11,12 +11,12 @@ from cocotb.clock import Clock
 from cocotb.triggers import ReadOnly, RisingEdge
 
 from common import clock_and_check, drive_events, rng, start_clock_and_reset, to_int_x_as_zero
-from prenc.datapath import Datapath
-from prenc.debruijn import Code
-from prenc.encoder import SIGNALS, Disc, VirtualEncoder
-from prenc.faults import Bounce, ContaminatedSlot, MissedQuadratureState, RandomGlitches, TransientMisread
-from prenc.predictor import taps_mask
-from prenc.trajectory import Trajectory
+from prenc.core.datapath import Datapath
+from prenc.codes.debruijn import Code
+from prenc.virtual.encoder import SIGNALS, Disc, VirtualEncoder
+from prenc.virtual.faults import Bounce, ContaminatedSlot, MissedQuadratureState, RandomGlitches, TransientMisread
+from prenc.core.predictor import taps_mask
+from prenc.virtual.trajectory import Trajectory
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_datapath"

@@ -12,10 +12,10 @@ import pytest
 import cocotb
 
 from common import clock_and_check, rng, start_clock_and_reset
-from prenc.encoder import SIGNALS, VirtualEncoder
-from prenc.faults import Bounce, RandomGlitches
-from prenc.input_conditioner import InputConditioner
-from prenc.trajectory import Trajectory
+from prenc.virtual.encoder import SIGNALS, VirtualEncoder
+from prenc.virtual.faults import Bounce, RandomGlitches
+from prenc.core.input_conditioner import InputConditioner
+from prenc.virtual.trajectory import Trajectory
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_input_conditioner"

@@ -12,8 +12,8 @@ import cocotb
 from cocotb.clock import Clock
 
 from common import clock_and_check, rng
-from prenc.debruijn import Code
-from prenc.predictor import Predictor, taps_mask
+from prenc.codes.debruijn import Code
+from prenc.core.predictor import Predictor, taps_mask
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_predictor"

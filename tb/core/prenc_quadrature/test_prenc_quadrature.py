@@ -13,10 +13,10 @@ import cocotb
 from cocotb.triggers import ReadOnly, RisingEdge
 
 from common import clock_and_check, drive_events, rng, start_clock_and_reset
-from prenc.encoder import VirtualEncoder
-from prenc.faults import Glitch, MissedQuadratureState, RandomGlitches
-from prenc.quadrature import QuadratureDecoder
-from prenc.trajectory import Trajectory
+from prenc.virtual.encoder import VirtualEncoder
+from prenc.virtual.faults import Glitch, MissedQuadratureState, RandomGlitches
+from prenc.core.quadrature import QuadratureDecoder
+from prenc.virtual.trajectory import Trajectory
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_quadrature"

@@ -3,8 +3,8 @@
 
 Inputs come from the datapath model chain on virtual-encoder runs with random
 motion, dithering across A's edge and missed quadrature states (the chain itself is
-checked against the truth in sim/tests/test_datapath.py); the expected outputs from
-prenc.sampler.Sampler with the same JUMP (landing readings after a missed state: the
+checked against the truth in sim/tests/core/test_datapath.py); the expected outputs from
+prenc.core.sampler.Sampler with the same JUMP (landing readings after a missed state: the
 core's sampler).
 """
 
@@ -14,12 +14,12 @@ import pytest
 import cocotb
 
 from common import clock_and_check, rng
-from prenc.datapath import Datapath
-from prenc.debruijn import Code
-from prenc.encoder import Disc, VirtualEncoder
-from prenc.faults import MissedQuadratureState
-from prenc.sampler import Sampler
-from prenc.trajectory import Trajectory
+from prenc.core.datapath import Datapath
+from prenc.codes.debruijn import Code
+from prenc.virtual.encoder import Disc, VirtualEncoder
+from prenc.virtual.faults import MissedQuadratureState
+from prenc.core.sampler import Sampler
+from prenc.virtual.trajectory import Trajectory
 from runner import SIMULATORS, run
 from cocotb.clock import Clock
 

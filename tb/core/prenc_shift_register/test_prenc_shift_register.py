@@ -12,11 +12,11 @@ import cocotb
 from cocotb.clock import Clock
 
 from common import clock_and_check, rng, to_int_x_as_zero
-from prenc.datapath import Datapath
-from prenc.debruijn import Code
-from prenc.encoder import Disc, VirtualEncoder
-from prenc.faults import MissedQuadratureState
-from prenc.trajectory import Trajectory
+from prenc.core.datapath import Datapath
+from prenc.codes.debruijn import Code
+from prenc.virtual.encoder import Disc, VirtualEncoder
+from prenc.virtual.faults import MissedQuadratureState
+from prenc.virtual.trajectory import Trajectory
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_shift_register"

@@ -1,0 +1,106 @@
+# SPDX-License-Identifier: Apache-2.0
+"""prenc host: the user's errors, one line each, and CRC errors that never stop it.
+
+The board here is a small Python responder on a real pseudo-terminal (the RTL
+board is tested end to end in tb/board/prenc_board); it lets the test choose what a
+board cannot be made to do: speak another protocol version, say nothing, or
+corrupt an answer.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import tty
+
+import pytest
+
+from prenc.board import protocol
+from prenc.cli.main import main
+from prenc.board.protocol import Answer, FrameParser, Kind
+
+
+class FakeBoard:
+    def __init__(self, version: int = protocol.VERSION, silent: bool = False, corrupt_first: bool = False):
+        self.master, self.slave = os.openpty()
+        tty.setraw(self.master)
+        self.port = os.ttyname(self.slave)
+        self.version, self.silent, self.corrupt_first = version, silent, corrupt_first
+        self.stop = threading.Event()
+        self.thread = threading.Thread(target=self._serve, daemon=True)
+        self.thread.start()
+
+    def _answer(self, kind: Kind, seq: int) -> bytes:
+        values = {Kind.ABS: {"position": 256}, Kind.STATUS: {"version": self.version, "bits": 10, "track1_errors": 0,
+                                                            "track2_errors": 0, "sync_errors": 0, "link_errors": 0}}
+        return protocol.encode_answer(Answer(kind, True, 1, 1, False, seq, 1000 * seq, values[kind]))
+
+    def _serve(self) -> None:
+        parser, seq = FrameParser(max_len=protocol.REQUEST_MAX_LEN), 0
+        import select
+
+        while not self.stop.is_set():
+            ready, _, _ = select.select([self.master], [], [], 0.05)
+            if not ready:
+                continue
+            for frame in parser.feed(os.read(self.master, 64)):
+                if self.silent:
+                    continue
+                out = self._answer(Kind(frame.payload[0]), seq)
+                if self.corrupt_first and seq == 0:
+                    os.write(self.master, out[:-1] + bytes([out[-1] ^ 1]))  # a bad CRC ...
+                    out = self._answer(Kind(frame.payload[0]), seq)          # ... then the good one
+                os.write(self.master, out)
+                seq += 1
+
+    def close(self) -> None:
+        self.stop.set()
+        self.thread.join()
+        os.close(self.slave)
+        os.close(self.master)
+
+
+@pytest.fixture
+def board(request):
+    fake = FakeBoard(**getattr(request, "param", {}))
+    yield fake
+    fake.close()
+
+
+def test_read_prints_the_answer(board, capsys):
+    assert main(["host", "read", "--port", board.port, "--kind", "abs"]) == 0
+    assert capsys.readouterr().out.startswith("abs 256 / 1024 = 90.000 deg  valid NORMAL cw")
+
+
+def test_a_missing_port_is_one_line(capsys):
+    assert main(["host", "read", "--port", "/dev/ttyNOSUCH0"]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "port /dev/ttyNOSUCH0 not found" in err
+
+
+@pytest.mark.parametrize("board", [{"silent": True}], indirect=True)
+def test_no_answer_is_a_timeout(board, capsys):
+    assert main(["host", "read", "--port", board.port, "--timeout", "0.3"]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "no answer from" in err and "within 0.3 s" in err
+
+
+@pytest.mark.parametrize("board", [{"version": 9}], indirect=True)
+def test_a_version_mismatch_is_named(board, capsys):
+    assert main(["host", "read", "--port", board.port]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "protocol version mismatch: the board speaks version 9" in err
+
+
+@pytest.mark.parametrize("board", [{"corrupt_first": True}], indirect=True)
+def test_a_crc_error_is_counted_not_fatal(board, capsys):
+    assert main(["host", "read", "--port", board.port, "--kind", "abs", "--json"]) == 0
+    out = capsys.readouterr().out
+    assert '"position": 256' in out and '"crc_errors": 1' in out
+
+
+def test_plot_rejects_a_file_that_is_not_a_log(tmp_path, capsys):
+    bad = tmp_path / "x.csv"
+    bad.write_text("a,b\n1,2\n")
+    assert main(["host", "plot", str(bad)]) == 1
+    assert "not a `prenc host log` file" in capsys.readouterr().err
