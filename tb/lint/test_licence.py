@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The licence: LICENSE at the root, pyproject's licence field, and an SPDX line at the
-top of every source file of rtl/, sim/, tb/, scripts/, constraints/ and formal/ (issue 17)."""
+top of every source file of rtl/, sim/, tb/, scripts/, constraints/, formal/ and sw/
+(issue 17)."""
 
 from __future__ import annotations
 
@@ -10,8 +11,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 SPDX = "SPDX-License-Identifier: Apache-2.0"
-FOLDERS = ("rtl", "sim", "tb", "scripts", "constraints", "formal")
-SOURCES = {".v", ".vh", ".f", ".py", ".pcf", ".lpf", ".md", ".sby"}
+FOLDERS = ("rtl", "sim", "tb", "scripts", "constraints", "formal", "sw")
+SOURCES = {".v", ".vh", ".f", ".py", ".pcf", ".lpf", ".md", ".sby", ".core", ".rdl", ".c", ".h"}
 
 
 def sources() -> list[Path]:

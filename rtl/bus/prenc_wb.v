@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: Apache-2.0
+// prenc_wb: the reader core on a Wishbone B4 bus (32-bit data), with its register map.
+//
+// The map is rtl/bus/prenc_wb.rdl (SystemRDL); docs/registers.md and sw/prenc_wb.h are
+// generated from it (scripts/regmap.py), and tb/lint/test_regmap.py checks that the
+// addresses below are the RDL's. In short (byte offsets):
+//   0x00 ID 'prnc'        0x04 VERSION          0x08 PARAMS (N, FILTER)
+//   0x0C CTRL             resolution (rw, reset 1), clear_errors, snapshot (write 1)
+//   0x10 STATUS           valid, mode, direction, track1_valid, track2_valid
+//   0x14 POSITION         pos_abs or pos_hyb as CTRL.resolution selects
+//   0x18 POS_ABS  0x1C POS_HYB  0x20 INCREMENTAL  0x24 TRACK1  0x28 TRACK2
+//   0x2C TRACK_ERRORS (track 2 << 16 | track 1)   0x30 SYNC_ERRORS   0x34 TIMESTAMP
+//   0x38 IRQ_STATUS (write 1 to clear)   0x3C IRQ_ENABLE
+//   0x40 SNAP_POS_HYB  0x44 SNAP_STATUS  0x48 SNAP_INCREMENTAL  0x4C SNAP_TIME
+//
+// Bus: classic Wishbone B4 slave, word addresses (wb_adr_i = byte offset / 4, as
+// LiteX's bus), one access per three clocks: ack one clock after cyc & stb, with the
+// read data. Writes honour wb_sel_i[0] (every writable field is in byte 0); other
+// offsets up to 0x7C read 0 and ignore writes. wb_err_o is never raised.
+//
+// Snapshot: writing CTRL.snapshot = 1 latches pos_hyb, STATUS, INCREMENTAL and
+// TIMESTAMP on one clock (the clock the write is acknowledged), so that they belong
+// together however long the reads that follow take.
+//
+// Interrupt: IRQ_STATUS.lost_valid is set when pos_valid falls, .mode_change when mode
+// changes (an event beats a clear on the same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
+//
+// Parameters: those of prenc_core (N, TAPS, FILTER, ROM_FILE; the counters are 32-bit
+// and 16-bit, as the map), checked there; N <= 24 fits the map's fields.
+
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_wb #(
+  parameter integer N        = 10,
+  parameter [31:0]  TAPS     = 32'h0000_0204,
+  parameter integer FILTER   = 2,
+  parameter         ROM_FILE = "prenc_rom_n10.hex"
+) (
+  input  wire         clk,
+  input  wire         rst,
+  // The encoder's pins (asynchronous).
+  input  wire         head1,
+  input  wire         head2,
+  input  wire         sync_a,
+  input  wire         sync_b,
+  // Wishbone B4 classic slave.
+  input  wire         wb_cyc_i,
+  input  wire         wb_stb_i,
+  input  wire         wb_we_i,
+  input  wire [4:0]   wb_adr_i,
+  input  wire [31:0]  wb_dat_i,
+  input  wire [3:0]   wb_sel_i,
+  output reg  [31:0]  wb_dat_o,
+  output reg          wb_ack_o,
+  output wire         wb_err_o,
+  // Interrupt, level, active high.
+  output wire         irq,
+  // The position for logic beside the bus (the core's outputs).
+  output wire [N+1:0] pos_hyb,
+  output wire         pos_valid
+);
+
+  // Word addresses of the map (checked against prenc_wb.rdl by tb/lint/test_regmap.py).
+  localparam [4:0] A_ID               = 5'h00;
+  localparam [4:0] A_VERSION          = 5'h01;
+  localparam [4:0] A_PARAMS           = 5'h02;
+  localparam [4:0] A_CTRL             = 5'h03;
+  localparam [4:0] A_STATUS           = 5'h04;
+  localparam [4:0] A_POSITION         = 5'h05;
+  localparam [4:0] A_POS_ABS          = 5'h06;
+  localparam [4:0] A_POS_HYB          = 5'h07;
+  localparam [4:0] A_INCREMENTAL      = 5'h08;
+  localparam [4:0] A_TRACK1           = 5'h09;
+  localparam [4:0] A_TRACK2           = 5'h0A;
+  localparam [4:0] A_TRACK_ERRORS     = 5'h0B;
+  localparam [4:0] A_SYNC_ERRORS      = 5'h0C;
+  localparam [4:0] A_TIMESTAMP        = 5'h0D;
+  localparam [4:0] A_IRQ_STATUS       = 5'h0E;
+  localparam [4:0] A_IRQ_ENABLE       = 5'h0F;
+  localparam [4:0] A_SNAP_POS_HYB     = 5'h10;
+  localparam [4:0] A_SNAP_STATUS      = 5'h11;
+  localparam [4:0] A_SNAP_INCREMENTAL = 5'h12;
+  localparam [4:0] A_SNAP_TIME        = 5'h13;
+
+  localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
+  localparam [31:0] VERSION = 32'h0000_0100;  // 0.1.0
+
+  generate
+    if (N < 2 || N > 24) begin : g_bad_n
+      initial $display("ERROR: %m: parameter N = %0d out of range 2..24 (the map's fields)", N);
+      prenc_wb_parameter_N_out_of_range_2_to_24 u_stop ();
+    end
+    if (FILTER < 0 || FILTER > 65535) begin : g_bad_filter
+      initial $display("ERROR: %m: parameter FILTER = %0d out of range 0..65535", FILTER);
+      prenc_wb_parameter_FILTER_out_of_range_0_to_65535 u_stop ();
+    end
+  endgenerate
+
+  // Control.
+  reg        resolution;
+  reg        clear_errors;
+  reg        snapshot;
+  reg [1:0]  irq_status;   // {mode_change, lost_valid}
+  reg [1:0]  irq_enable;
+  reg [31:0] timestamp;
+
+  // The core.
+  wire [N-1:0]  pos_abs;
+  wire [2:0]    mode;
+  wire [N+1:0]  position;
+  wire [31:0]   incremental;
+  wire          direction;
+  wire [N-1:0]  track1_pos;
+  wire          track1_valid;
+  wire [N-1:0]  track2_pos;
+  wire          track2_valid;
+  wire [15:0]   track1_errors;
+  wire [15:0]   track2_errors;
+  wire [15:0]   sync_errors;
+
+  prenc_core #(
+    .N           (N),
+    .TAPS        (TAPS),
+    .FILTER      (FILTER),
+    .ROM_FILE    (ROM_FILE),
+    .COUNT_WIDTH (32),
+    .ERROR_WIDTH (16)
+  ) u_core (
+    .clk           (clk),
+    .rst           (rst),
+    .head1         (head1),
+    .head2         (head2),
+    .sync_a        (sync_a),
+    .sync_b        (sync_b),
+    .resolution    (resolution),
+    .clear_errors  (clear_errors),
+    .pos_abs       (pos_abs),
+    .pos_hyb       (pos_hyb),
+    .pos_valid     (pos_valid),
+    .mode          (mode),
+    .position      (position),
+    .incremental   (incremental),
+    .direction     (direction),
+    .track1_pos    (track1_pos),
+    .track1_valid  (track1_valid),
+    .track2_pos    (track2_pos),
+    .track2_valid  (track2_valid),
+    .track1_errors (track1_errors),
+    .track2_errors (track2_errors),
+    .sync_errors   (sync_errors)
+  );
+
+  wire [6:0] status = {track2_valid, track1_valid, direction, mode, pos_valid};
+
+  // Bus access: one acknowledged access per cyc & stb, ack for one clock.
+  wire access = wb_cyc_i & wb_stb_i & ~wb_ack_o;
+  wire write0 = access & wb_we_i & wb_sel_i[0];
+
+  // Events of the interrupt.
+  reg       last_valid;
+  reg [2:0] last_mode;
+  wire [1:0] events = {mode != last_mode, last_valid & ~pos_valid};
+
+  // Snapshot registers.
+  reg [N+1:0] snap_pos_hyb;
+  reg [6:0]   snap_status;
+  reg [31:0]  snap_incremental;
+  reg [31:0]  snap_time;
+
+  always @(posedge clk) begin
+    if (rst) begin
+      resolution   <= 1'b1;
+      clear_errors <= 1'b0;
+      snapshot     <= 1'b0;
+      irq_status   <= 2'b00;
+      irq_enable   <= 2'b00;
+      timestamp    <= 32'd0;
+      last_valid   <= 1'b0;
+      last_mode    <= 3'd0;
+      wb_ack_o     <= 1'b0;
+    end else begin
+      timestamp    <= timestamp + 1'b1;
+      last_valid   <= pos_valid;
+      last_mode    <= mode;
+      wb_ack_o     <= access;
+      clear_errors <= write0 && wb_adr_i == A_CTRL && wb_dat_i[1];
+      snapshot     <= write0 && wb_adr_i == A_CTRL && wb_dat_i[2];
+      if (write0 && wb_adr_i == A_CTRL) resolution <= wb_dat_i[0];
+      if (write0 && wb_adr_i == A_IRQ_ENABLE) irq_enable <= wb_dat_i[1:0];
+      if (write0 && wb_adr_i == A_IRQ_STATUS) begin
+        irq_status <= (irq_status & ~wb_dat_i[1:0]) | events;
+      end else begin
+        irq_status <= irq_status | events;
+      end
+    end
+  end
+
+  // The snapshot: everything from the clock after the write, together.
+  always @(posedge clk) begin
+    if (rst) begin
+      snap_pos_hyb     <= {N+2{1'b0}};
+      snap_status      <= 7'd0;
+      snap_incremental <= 32'd0;
+      snap_time        <= 32'd0;
+    end else if (snapshot) begin
+      snap_pos_hyb     <= pos_hyb;
+      snap_status      <= status;
+      snap_incremental <= incremental;
+      snap_time        <= timestamp;
+    end
+  end
+
+  // Read data, registered with ack.
+  always @(posedge clk) begin
+    if (access) begin
+      case (wb_adr_i)
+        A_ID:               wb_dat_o <= ID;
+        A_VERSION:          wb_dat_o <= VERSION;
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 11'd0, N[4:0]};
+        A_CTRL:             wb_dat_o <= {31'd0, resolution};
+        A_STATUS:           wb_dat_o <= {25'd0, status};
+        A_POSITION:         wb_dat_o <= {{(30 - N){1'b0}}, position};
+        A_POS_ABS:          wb_dat_o <= {{(32 - N){1'b0}}, pos_abs};
+        A_POS_HYB:          wb_dat_o <= {{(30 - N){1'b0}}, pos_hyb};
+        A_INCREMENTAL:      wb_dat_o <= incremental;
+        A_TRACK1:           wb_dat_o <= {track1_valid, {(31 - N){1'b0}}, track1_pos};
+        A_TRACK2:           wb_dat_o <= {track2_valid, {(31 - N){1'b0}}, track2_pos};
+        A_TRACK_ERRORS:     wb_dat_o <= {track2_errors, track1_errors};
+        A_SYNC_ERRORS:      wb_dat_o <= {16'd0, sync_errors};
+        A_TIMESTAMP:        wb_dat_o <= timestamp;
+        A_IRQ_STATUS:       wb_dat_o <= {30'd0, irq_status};
+        A_IRQ_ENABLE:       wb_dat_o <= {30'd0, irq_enable};
+        A_SNAP_POS_HYB:     wb_dat_o <= {{(30 - N){1'b0}}, snap_pos_hyb};
+        A_SNAP_STATUS:      wb_dat_o <= {25'd0, snap_status};
+        A_SNAP_INCREMENTAL: wb_dat_o <= snap_incremental;
+        A_SNAP_TIME:        wb_dat_o <= snap_time;
+        default:            wb_dat_o <= 32'd0;
+      endcase
+    end
+  end
+
+  assign wb_err_o = 1'b0;
+  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3]};
+  assign irq      = |(irq_status & irq_enable);
+
+endmodule
+
+`resetall
