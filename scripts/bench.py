@@ -150,6 +150,15 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 rows.append((f"core alone, {t.name}", n, _synth_line(synth, r)))
             except synth.FlowError as err:
                 rows.append((f"core alone, {t.name}", n, f"FAILED: {err}"))
+    # prenc_wb at the boards' design clocks (the UP5K through the few-pin harness).
+    for target, top, aim in (("ice40-up5k", "prenc_wb_harness", 24.0), ("ecp5-25k", "prenc_wb", 50.0)):
+        out = SIM_BUILD / "bench" / "synth" / f"{top}-{target}-n10"
+        what = f"{top}, {synth.TARGETS[target].name}"
+        try:
+            rows.append((what, 10, _synth_line(synth, synth.core_build(target, 10, aim, out, require_timing=False,
+                                                                       top=top))))
+        except synth.FlowError as err:
+            rows.append((what, 10, f"FAILED: {err}"))
     for name, board in synth.BOARDS.items():
         for n in (10, 16):
             t = synth.TARGETS[board.target]

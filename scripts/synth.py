@@ -42,7 +42,7 @@ CONSTRAINTS = REPO / "constraints"
 BIN = Path(sys.executable).parent
 
 sys.path.insert(0, str(REPO / "tb"))
-from runner import FileListError, read_file_list  # noqa: E402  (the one file-list reader)
+from runner import FileListError, list_file, read_file_list  # noqa: E402  (the one file-list reader)
 
 
 @dataclass(frozen=True)
@@ -289,10 +289,12 @@ def taps_mask(taps: tuple[int, ...]) -> int:
     return mask(taps)
 
 
-def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True) -> Result:
+def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
+               top: str = "prenc_core") -> Result:
+    """The reader core alone (or prenc_wb, the core on Wishbone), placed and routed."""
     rom = rom_for(bits, out)
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
-    return build("prenc_core", file_list(RTL / "core" / "prenc_core.f"), target, params, freq_mhz, out, bitstream=False,
+    return build(top, file_list(list_file(top)), target, params, freq_mhz, out, bitstream=False,
                  require_timing=require_timing)
 
 
@@ -328,9 +330,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--bits", type=int, default=10, help="N, the code word length (default 10)")
     parser.add_argument("--baud", type=int, help="UART baud rate (default: the board's, 115200)")
     parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
+    parser.add_argument("--top", choices=("prenc_core", "prenc_wb", "prenc_wb_harness"), default="prenc_core",
+                        help="with --core: the core alone, on its Wishbone bus (prenc_wb), or that with "
+                             "an LFSR for bus master and one pin out (prenc_wb_harness, for the UP5K)")
     parser.add_argument("--out", type=Path, help="output folder (default build/synth/<board or core>)")
     args = parser.parse_args(argv)
-    name = args.board or f"core-{args.core}"
+    name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
     out = args.out or REPO / "build" / "synth" / f"{name}-n{args.bits}"
     if out.exists():
         shutil.rmtree(out)
@@ -339,7 +344,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.board:
             result = board_build(BOARDS[args.board], args.bits, out, args.baud)
         else:
-            result = core_build(args.core, args.bits, args.freq, out)
+            result = core_build(args.core, args.bits, args.freq, out, top=args.top)
     except (FlowError, ValueError) as err:
         print(f"synth: error: {err}", file=sys.stderr)
         return 1

@@ -32,6 +32,17 @@ def test_board_builds_and_meets_timing(board):
     assert "Fmax" in (out / "report.md").read_text()
 
 
+@pytest.mark.parametrize("target,top,clock_mhz", [("ice40-up5k", "prenc_wb_harness", 24.0),
+                                                  ("ecp5-25k", "prenc_wb", 50.0)])
+def test_the_wishbone_core_meets_the_boards_clocks(target, top, clock_mhz):
+    """prenc_wb at the design clock of the board of its family (iCEBreaker 24 MHz, ULX3S
+    50 MHz); on the 48-pin UP5K through the harness that gives it one pin out."""
+    out = SIM_BUILD / "boards" / f"{top}-{target}"
+    result = synth.core_build(target, 10, clock_mhz, out, top=top)
+    assert result.timing_met
+    assert result.used(synth.TARGETS[target].brams)[0] >= 1, "the ROM must be in block RAM"
+
+
 def test_a_missing_rom_fails_the_build():
     out = SIM_BUILD / "boards" / "missing-rom"
     with pytest.raises(synth.FlowError, match="ROM file .* not found"):
