@@ -21,8 +21,10 @@ returns the values of the clock before that edge; the monitor logs every clock.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -344,21 +346,26 @@ def wb_parameters(n: int, filter_len: int) -> dict:
     return {"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": filter_len, "ROM_FILE": rom_file(n)}
 
 
-def regmap_env() -> dict:
-    """The Python register access, generated from the RDL into sim_build/regmap/."""
+@contextlib.contextmanager
+def regmap_env():
+    """The Python register access, generated from the RDL into a folder of this test's own
+    (parallel workers must not rewrite each other's), as the environment of the run."""
     sys.path.insert(0, str(REPO / "scripts"))
     import regmap
 
-    folder = SIM_BUILD / "regmap"
-    regmap.python_access(regmap.compile_rdl(), folder)
-    return {"PRENC_REGMAP": str(folder)}
+    SIM_BUILD.mkdir(exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="regmap-", dir=SIM_BUILD) as folder:
+        regmap.python_access(regmap.compile_rdl(), Path(folder))
+        yield {"PRENC_REGMAP": folder}
 
 
 @pytest.mark.parametrize("n,filter_len", [(10, 2), (6, 0)])
 def test_prenc_wb_verilator(n, filter_len):
-    run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(n, filter_len), extra_env=regmap_env())
+    with regmap_env() as env:
+        run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(n, filter_len), extra_env=env)
 
 
 def test_prenc_wb_icarus_smoke():
-    run(__file__, TOPLEVEL, "icarus", parameters=wb_parameters(8, 2),
-        extra_env={**regmap_env(), "COCOTB_TEST_FILTER": "registers_after_reset_and_writes"})
+    with regmap_env() as env:
+        run(__file__, TOPLEVEL, "icarus", parameters=wb_parameters(8, 2),
+            extra_env={**env, "COCOTB_TEST_FILTER": "registers_after_reset_and_writes"})
