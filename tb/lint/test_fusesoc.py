@@ -162,11 +162,13 @@ targets:
     assert not list((library / "build" / "bad").rglob("prenc_rom_n40.hex"))
 
 
-def test_the_smoke_simulation_passes(library):
+def test_the_smoke_simulations_pass(library):
     proc = fusesoc(library, "run", "--build-root", "build/sim", "--target", "sim", "prenc:reader:core")
     found = re.search(r"prenc_core_smoke: PASS: N = 10, first valid after ([\d.]+) slots", proc.stdout)
     assert found, proc.stdout[-2000:]
     assert float(found.group(1)) <= 12
+    proc = fusesoc(library, "run", "--build-root", "build/sim-bus", "--target", "sim", "prenc:reader:bus")
+    assert "prenc_wb_smoke: PASS: N = 10" in proc.stdout, proc.stdout[-2000:]
 
 
 @pytest.mark.synth
