@@ -48,10 +48,8 @@ def registers(root) -> list[dict]:
     out = []
     for reg in root.top.registers():
         fields = [{"name": f.inst_name, "lsb": f.lsb, "msb": f.msb, "sw": access(f),
-                   "reset": f.get_property("reset"),
-                   "desc": f.get_property("desc") or ""} for f in reg.fields()]
-        out.append({"name": reg.inst_name, "offset": reg.absolute_address, "fields": fields,
-                    "title": reg.get_property("name"), "desc": reg.get_property("desc") or ""})
+                   "reset": f.get_property("reset")} for f in reg.fields()]
+        out.append({"name": reg.inst_name, "offset": reg.absolute_address, "fields": fields})
     return out
 
 

@@ -25,12 +25,13 @@ def test_the_rtl_addresses_are_the_rdl_s():
     source = (REPO / "rtl" / "bus" / "prenc_wb.v").read_text()
     rtl = {m.group(1): int(m.group(2), 16)
            for m in re.finditer(r"localparam \[4:0\] A_(\w+)\s*=\s*5'h([0-9A-Fa-f]+);", source)}
-    rdl = {reg["name"]: reg["offset"] // 4 for reg in regmap.registers(regmap.compile_rdl())}
+    registers = regmap.registers(regmap.compile_rdl())
+    rdl = {reg["name"]: reg["offset"] // 4 for reg in registers}
     assert rtl == rdl
     ids = {m.group(1): int(m.group(2).replace("_", ""), 16)
            for m in re.finditer(r"localparam \[31:0\] (ID|VERSION)\s*=\s*32'h([0-9A-Fa-f_]+);", source)}
     resets = {reg["name"]: sum((f["reset"] or 0) << f["lsb"] for f in reg["fields"])
-              for reg in regmap.registers(regmap.compile_rdl())}
+              for reg in registers}
     assert ids == {"ID": resets["ID"], "VERSION": resets["VERSION"]}
 
 

@@ -49,7 +49,7 @@ MAP_END = 0x80  # the slave decodes wb_adr_i[4:0]: 32 words
 
 
 @dataclass
-class Clock_:
+class Outputs:
     """What the core and the interrupt logic showed after one rising edge."""
     ack: int
     valid: int
@@ -79,7 +79,7 @@ class Bench:
 
     def __init__(self, dut):
         self.dut = dut
-        self.log: list[Clock_] = []
+        self.log: list[Outputs] = []
         self.ack_edges: list[int] = []
         self.consumed = 0
         self.master = None
@@ -121,7 +121,7 @@ class Bench:
                        core.track2_pos, core.track2_valid, core.track1_errors, core.track2_errors,
                        core.sync_errors, dut.timestamp, dut.irq_status, dut.irq_enable, dut.irq,
                        dut.resolution)
-            row = Clock_(*(to_int_x_as_zero(s.value) for s in signals))
+            row = Outputs(*(to_int_x_as_zero(s.value) for s in signals))
             self.log.append(row)
             if row.ack:
                 self.ack_edges.append(k)
@@ -186,7 +186,7 @@ SOURCES = {
 }
 
 
-def expected_word(reg, row: Clock_) -> int:
+def expected_word(reg, row: Outputs) -> int:
     """The word a register must read when the core shows `row`: each field's source at
     the field's place in the map (write-only pulses read 0)."""
     sources = SOURCES[reg.inst_name]
