@@ -341,7 +341,7 @@ module prenc_mode_fsm #(
           // The other way: the count is one slot off; the offset takes it.
           dual_next    = 1'b0;
           mode_next    = NORMAL;
-          offset_next  = dual_cw_reg ? offset_reg - 1'b1 : offset_reg + 1'b1;
+          offset_next  = offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1};  // -1 CW, +1 CCW
           realign_next = dual_cw_reg ? 2'b01 : 2'b10;
         end
       end

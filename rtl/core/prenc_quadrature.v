@@ -76,18 +76,19 @@ module prenc_quadrature #(
 
   always @(posedge clk) begin
     quarter_reg <= q_in;
+    if (delta[0]) begin  // a step: +1 (delta 1) or -1 (delta 3), one adder for both
+      count_reg <= count_reg + {{(COUNT_WIDTH - 1){delta[1]}}, 1'b1};
+    end
     step_reg    <= 1'b0;
     illegal_reg <= 1'b0;
     case (delta)
       2'd1: begin
         step_reg    <= 1'b1;
         step_cw_reg <= 1'b1;
-        count_reg   <= count_reg + 1'b1;
       end
       2'd3: begin
         step_reg    <= 1'b1;
         step_cw_reg <= 1'b0;
-        count_reg   <= count_reg - 1'b1;
       end
       2'd2: begin
         illegal_reg <= 1'b1;

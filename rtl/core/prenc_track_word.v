@@ -224,11 +224,10 @@ module prenc_track_word #(
   wire         idx_down = ~ev_up & ev_down & ~at_bottom;
   wire         base_inc = (up & ~idx_up) | (~up & ~down & idx_down);
   wire         base_dec = (down & ~idx_down) | (~up & ~down & idx_up);
-  wire [N-1:0] base_plus  = base_reg + 1'b1;
-  wire [N-1:0] base_minus = base_reg - 1'b1;
+  wire         base_back  = base_dec & ~base_inc;  // (both only with up and down at once)
+  wire [N-1:0] base_step  = base_reg + {{(N - 1){base_back}}, base_inc | base_dec};  // one adder
   wire [N-1:0] base_home  = slot + HO32[N-1:0];
-  wire [N-1:0] base_next  = (rst | flush | demote) ? base_home :
-                            base_inc ? base_plus : base_dec ? base_minus : base_reg;
+  wire [N-1:0] base_next  = (rst | flush | demote) ? base_home : base_step;
 
   wire [SW:0] score_plus = {1'b0, score_reg} + {1'b0, S_UP};
   reg  [SW-1:0] score_next;
@@ -262,6 +261,9 @@ module prenc_track_word #(
                     (strobe & ~law_reg)   ? (&(known_reg | at_index)) : (&known_reg);
 
   wire        changed        = head ^ bit_here;
+  // A slide moves both ext counters one slot, opposite ways: one adder each.
+  wire [5:0]  ext_lo_step    = ext_lo_reg + {{5{~ev_up}}, 1'b1};  // +1 up, -1 down
+  wire [5:0]  ext_hi_step    = ext_hi_reg + {{5{ev_up}}, 1'b1};   // -1 up, +1 down
 
   reg [N-1:0]  known_next;
   reg          law_next;
@@ -285,8 +287,8 @@ module prenc_track_word #(
       if (at_top) begin
         word_next   = {word_reg[N-2:0], fwd_bit};
         known_next  = {known_reg[N-2:0], ext_hi_reg != 6'd0};
-        ext_lo_next = !known_reg[N-1] ? 6'd0 : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_reg + 1'b1;
-        ext_hi_next = (ext_hi_reg == 6'd0) ? 6'd0 : ext_hi_reg - 1'b1;
+        ext_lo_next = !known_reg[N-1] ? 6'd0 : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
+        ext_hi_next = (ext_hi_reg == 6'd0) ? 6'd0 : ext_hi_step;
       end else begin
         index_next = index_reg + 1'b1;
       end
@@ -294,8 +296,8 @@ module prenc_track_word #(
       if (at_bottom) begin
         word_next   = {inv_bit, word_reg[N-1:1]};
         known_next  = {ext_lo_reg != 6'd0, known_reg[N-1:1]};
-        ext_hi_next = !known_reg[0] ? 6'd0 : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_reg + 1'b1;
-        ext_lo_next = (ext_lo_reg == 6'd0) ? 6'd0 : ext_lo_reg - 1'b1;
+        ext_hi_next = !known_reg[0] ? 6'd0 : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
+        ext_lo_next = (ext_lo_reg == 6'd0) ? 6'd0 : ext_lo_step;
       end else begin
         index_next = index_reg - 1'b1;
       end
