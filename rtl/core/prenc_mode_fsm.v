@@ -262,9 +262,7 @@ module prenc_mode_fsm #(
                                     (|vote_other) ? other_ext[DUAL_VOTES:1] : votes_other_reg;
   wire [3:0] voted_new  = voted_reg | {vote_other, vote_keep};
 
-  reg [2:0]           mode_next;
   reg [N-1:0]         offset_next;
-  reg                 dual_next;
   reg                 dual_cw_next;
   reg [N-1:0]         anchor_next;
   reg signed [RW-1:0] lo_next;
@@ -272,17 +270,22 @@ module prenc_mode_fsm #(
   reg [DUAL_VOTES-1:0] votes_keep_next;
   reg [DUAL_VOTES-1:0] votes_other_next;
   reg [3:0]           voted_next;
-  reg [1:0]           flush_next;
   reg [1:0]           law_on_next;
   reg [1:0]           realign_next;
-  reg                 locked_now;
-  reg                 drop;
-  reg [1:0]           s;
+  reg                 drop;  // the offset is dropped (flush, INCREMENTAL)
+  reg                 won;   // a hypothesis won: the modes resume from support
 
+  // A lock on a strobe while no offset is held: which tracks, and the mode it gives.
+  wire       lock_now    = ~illegal & strobe & ~locked & (both_ok | one1_ok | one2_ok);
+  wire [1:0] lock_law_on = both_ok ? 2'b11 : one1_ok ? 2'b01 : one2_ok ? 2'b10 : 2'b00;
+  wire [2:0] lock_mode   = both_ok ? NORMAL : one1_ok ? REDUCED_1 : REDUCED_2;
+  // A raw track whose full word converts to the held offset rejoins (law mode).
+  wire [1:0] rejoin      = {full[1] & ~lawish[1] & on2, full[0] & ~lawish[0] & on1};
+
+  // The events of this clock: what they decide. The mode follows below from the
+  // decisions in one flat expression (few logic levels to mode_reg).
   always @* begin
-    mode_next        = mode_reg;
     offset_next      = offset_reg;
-    dual_next        = dual_reg;
     // Outside dual the hypothesis state is held at its starting values (the event's
     // way and slot, nothing visited, no votes), ready for a transition judged now.
     dual_cw_next     = dual_cw_ahead;
@@ -292,37 +295,22 @@ module prenc_mode_fsm #(
     votes_keep_next  = dual_reg ? votes_keep_reg : {DUAL_VOTES{1'b0}};
     votes_other_next = dual_reg ? votes_other_reg : {DUAL_VOTES{1'b0}};
     voted_next       = dual_reg ? voted_reg : 4'd0;
-    flush_next       = 2'b00;
     law_on_next      = 2'b00;
     realign_next     = 2'b00;
-    locked_now       = 1'b0;
     drop             = 1'b0;
+    won              = 1'b0;
     if (illegal) begin
-      if (enter) begin
-        dual_next        = 1'b1;
-        mode_next        = INCREMENTAL;
-      end else if (locked) begin
-        drop = 1'b1;
-      end
+      // enter (below) opens the two hypotheses; otherwise a held offset drops.
+      drop = locked & ~enter;
     end else if (strobe && !locked) begin
-      if (both_ok) begin
+      if (both_ok || one1_ok) begin
         offset_next = off1;
-        law_on_next = 2'b11;
-        mode_next   = NORMAL;
-        locked_now  = 1'b1;
-      end else if (one1_ok) begin
-        offset_next = off1;
-        law_on_next = 2'b01;
-        mode_next   = REDUCED_1;
-        locked_now  = 1'b1;
       end else if (one2_ok) begin
         offset_next = off2;
-        law_on_next = 2'b10;
-        mode_next   = REDUCED_2;
-        locked_now  = 1'b1;
       end
+      law_on_next = lock_law_on;
     end else if (strobe && !dual_reg) begin
-      law_on_next = {full[1] & ~lawish[1] & on2, full[0] & ~lawish[0] & on1};
+      law_on_next = rejoin;
     end else if (strobe) begin
       if (far) begin
         drop = 1'b1;
@@ -335,42 +323,32 @@ module prenc_mode_fsm #(
         if (keep_new[0] && other_new[0]) begin
           drop = 1'b1;
         end else if (keep_new[DUAL_VOTES-1] && voted_new[0] && voted_new[1]) begin
-          dual_next = 1'b0;
-          mode_next = NORMAL;
+          won = 1'b1;
         end else if (other_new[DUAL_VOTES-1] && voted_new[2] && voted_new[3]) begin
           // The other way: the count is one slot off; the offset takes it.
-          dual_next    = 1'b0;
-          mode_next    = NORMAL;
+          won          = 1'b1;
           offset_next  = offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1};  // -1 CW, +1 CCW
           realign_next = dual_cw_reg ? 2'b01 : 2'b10;
         end
       end
     end
-    // Modes from support, every clock, while the offset stands.
-    s = sup | law_on_next;
-    if (drop) begin
-      flush_next = 2'b11;
-      dual_next  = 1'b0;
-      mode_next  = INCREMENTAL;
-    end else if (dual_next) begin
-      if (sup != 2'b11) begin
-        flush_next = 2'b11;
-        dual_next  = 1'b0;
-        mode_next  = INCREMENTAL;
-      end
-    end else if ((mode_next == NORMAL || mode_next == REDUCED_1 || mode_next == REDUCED_2) &&
-                 !locked_now) begin
-      case (s)
-        2'b11:   mode_next = NORMAL;
-        2'b01:   mode_next = REDUCED_1;
-        2'b10:   mode_next = REDUCED_2;
-        default: begin
-          flush_next = 2'b11;
-          mode_next  = INCREMENTAL;
-        end
-      endcase
-    end
   end
+
+  // Modes from support, every clock, while the offset stands: the support of this
+  // clock with the tracks that rejoin now (a lock or a won hypothesis adds none).
+  wire [1:0] support_now = sup | ((~illegal & strobe & locked & ~dual_reg) ? rejoin : 2'b00);
+  wire [2:0] s_mode      = (support_now == 2'b11) ? NORMAL :
+                           (support_now == 2'b01) ? REDUCED_1 :
+                           (support_now == 2'b10) ? REDUCED_2 : INCREMENTAL;
+  // Two hypotheses stay open (or open now) while both tracks support the offset.
+  wire       dual_keep   = (illegal & enter) | (dual_reg & ~won);
+  wire       dual_next   = dual_keep & ~drop & (sup == 2'b11);
+  wire       resume      = ~drop & ~dual_keep & ~lock_now & (valid_now | won);
+  wire [2:0] mode_next   = (drop | dual_keep) ? INCREMENTAL :
+                           lock_now ? lock_mode :
+                           resume ? s_mode : mode_reg;
+  wire       flush_all   = drop | (dual_keep & (sup != 2'b11)) | (resume & (support_now == 2'b00));
+  wire [1:0] flush_next  = {flush_all, flush_all};
 
   always @(posedge clk) begin
     mode_reg        <= mode_next;
