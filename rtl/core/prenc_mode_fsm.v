@@ -231,10 +231,17 @@ module prenc_mode_fsm #(
   wire below  = (rel_d < lo_reg) & ~(widen & (rel_d >= rel));  // used in dual only
   wire above  = (rel_d > hi_reg) & ~(widen & (rel_d <= rel));
   reg  fresh;
+  reg  below_lo;  // rel < lo_reg (this event below the interval), registered with it
+  reg  above_hi;  // rel > hi_reg
   always @(posedge clk) begin
-    fresh <= ~dual_reg | below | above;
+    fresh    <= ~dual_reg | below | above;
+    // Outside dual the interval restarts empty (lo 1, hi 0) and rel is the step.
+    below_lo <= dual_reg ? below : (step2 != 2'd1);
+    above_hi <= dual_reg ? above : (step2 == 2'd1);
     if (rst) begin
-      fresh <= 1'b0;
+      fresh    <= 1'b0;
+      below_lo <= 1'b1;
+      above_hi <= 1'b0;
     end
   end
   // Votes, registered one clock ahead: a reading where the two hypotheses predict
@@ -315,8 +322,8 @@ module prenc_mode_fsm #(
       if (far) begin
         drop = 1'b1;
       end else if (fresh) begin
-        lo_next          = (rel < lo_reg) ? rel : lo_reg;
-        hi_next          = (rel > hi_reg) ? rel : hi_reg;
+        lo_next          = below_lo ? rel : lo_reg;
+        hi_next          = above_hi ? rel : hi_reg;
         votes_keep_next  = keep_new;
         votes_other_next = other_new;
         voted_next       = voted_new;
