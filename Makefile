@@ -36,7 +36,7 @@ WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT
 BOARD ?= icebreaker
 BITS  ?= 10
 
-.PHONY: all demo test bench lint rom synth board-sim formal mutate sysdeps venv clean distclean
+.PHONY: all demo test bench lint rom synth board-sim formal mutate equiv sysdeps venv clean distclean
 
 all: test
 
@@ -82,6 +82,9 @@ synth: $(STAMP)
 formal: $(STAMP)
 	@$(PY) -m pytest -q -n $(JOBS) tb/formal
 	@$(PY) scripts/formal_covers.py
+
+equiv: $(STAMP)
+	@$(PY) scripts/equiv.py $(MODULE) $(if $(BASE),--base $(BASE)) $(ARGS)
 
 mutate: $(STAMP)
 	@$(PY) scripts/mutate.py --jobs $(JOBS) $(ARGS)
