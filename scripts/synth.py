@@ -290,12 +290,12 @@ def taps_mask(taps: tuple[int, ...]) -> int:
 
 
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
-               top: str = "prenc_core") -> Result:
+               top: str = "prenc_core", seed: int = 1) -> Result:
     """The reader core alone (or prenc_wb, the core on Wishbone), placed and routed."""
     rom = rom_for(bits, out)
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
     return build(top, file_list(list_file(top)), target, params, freq_mhz, out, bitstream=False,
-                 require_timing=require_timing)
+                 require_timing=require_timing, seed=seed)
 
 
 def matrix_build(n: int, target: str, freq_mhz: float, out: Path, table: str = "generator",
