@@ -349,9 +349,6 @@ module prenc_core #(
   reg [N-1:0] slot_j_reg;
   reg [N-1:0] off1_j_reg;
   reg [N-1:0] off2_j_reg;
-  reg         agree_j_reg;  // off1_j_reg == off2_j_reg, compared here for the judge's speed
-  wire [N-1:0] off1_now = conv1 - base1;
-  wire [N-1:0] off2_now = conv2 - base2;
 
   always @(posedge clk) begin
     illegal_t_reg     <= ev_illegal;
@@ -361,9 +358,8 @@ module prenc_core #(
     illegal_j_reg     <= illegal_t_reg;
     illegal_cw_j_reg  <= illegal_cw_t_reg;
     slot_j_reg        <= slot_t_reg;
-    off1_j_reg        <= off1_now;
-    off2_j_reg        <= off2_now;
-    agree_j_reg       <= (off1_now == off2_now);
+    off1_j_reg        <= conv1 - base1;
+    off2_j_reg        <= conv2 - base2;
     if (rst) begin
       illegal_t_reg     <= 1'b0;
       slot_t_reg        <= {N{1'b0}};
@@ -373,7 +369,6 @@ module prenc_core #(
       slot_j_reg        <= {N{1'b0}};
       off1_j_reg        <= {N{1'b0}};
       off2_j_reg        <= {N{1'b0}};
-      agree_j_reg       <= 1'b1;
     end
   end
 
@@ -399,7 +394,6 @@ module prenc_core #(
     .full_ahead   (full),
     .off1         (off1_j_reg),
     .off2         (off2_j_reg),
-    .agree        (agree_j_reg),
     .span1_ahead   (span1),
     .span2_ahead   (span2),
     .settled_ahead (settled),

@@ -66,7 +66,6 @@ module prenc_mode_fsm #(
   input  wire [1:0]   full_ahead,     // lock evidence of the next event (the J1 input)
   input  wire [N-1:0] off1,
   input  wire [N-1:0] off2,
-  input  wire         agree,        // off1 == off2 (registered with them)
   input  wire [5:0]   span1_ahead,
   input  wire [5:0]   span2_ahead,
   input  wire [1:0]   settled_ahead,
@@ -178,7 +177,7 @@ module prenc_mode_fsm #(
       span_one  <= 2'b00;
     end
   end
-  wire       agree12 = agree;
+  wire       agree12 = (off1 == off2);
   wire       both_ok = ready[0] & ready[1] & agree12 & span_both[0] & span_both[1];
   // One head alone, unless the other is settled on another offset.
   wire       one1_ok = ready[0] & span_one[0] & ~(ready[1] & ~agree12);
@@ -428,7 +427,6 @@ module prenc_mode_fsm #(
               slot_ahead2 == f_ahead2_prev - 1'b1);
     end
     assume (!(strobe && illegal));  // one event a clock
-    assume (agree == (off1 == off2));  // compared by the core with the offsets
   end
   // Lock evidence of this clock's event, from the last clock's *_ahead inputs.
   localparam [6:0] F_BOTH = LOCK_BOTH - 1;
