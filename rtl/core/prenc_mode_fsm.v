@@ -177,8 +177,14 @@ module prenc_mode_fsm #(
       span_one  <= 2'b00;
     end
   end
+  // Whether a lock is due if the two offsets agree, and if they do not, from registers
+  // in parallel with the offsets' comparison, which then only chooses between them.
+  wire [1:0] alone      = ready & span_one;  // one head's own evidence
+  wire       both_deep  = (&ready) & (&span_both);
+  wire       lock_agree = both_deep | (|alone);
+  wire       lock_alone = (alone[0] & ~ready[1]) | (alone[1] & ~ready[0]);
   wire       agree12 = (off1 == off2);
-  wire       both_ok = ready[0] & ready[1] & agree12 & span_both[0] & span_both[1];
+  wire       both_ok = agree12 & both_deep;
   // One head alone, unless the other is settled on another offset.
   wire       one1_ok = ready[0] & span_one[0] & ~(ready[1] & ~agree12);
   wire       one2_ok = ready[1] & span_one[1] & ~(ready[0] & ~agree12);
@@ -283,7 +289,7 @@ module prenc_mode_fsm #(
   reg                 won;   // a hypothesis won: the modes resume from support
 
   // A lock on a strobe while no offset is held: which tracks, and the mode it gives.
-  wire       lock_now    = ~illegal & strobe & ~locked & (both_ok | one1_ok | one2_ok);
+  wire       lock_now    = ~illegal & strobe & ~locked & (agree12 ? lock_agree : lock_alone);
   wire [1:0] lock_law_on = both_ok ? 2'b11 : one1_ok ? 2'b01 : one2_ok ? 2'b10 : 2'b00;
   wire [2:0] lock_mode   = both_ok ? NORMAL : one1_ok ? REDUCED_1 : REDUCED_2;
   // A raw track whose full word converts to the held offset rejoins (law mode).
