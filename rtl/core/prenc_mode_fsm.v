@@ -186,8 +186,8 @@ module prenc_mode_fsm #(
   wire       agree12 = (off1 == off2);
   wire       both_ok = agree12 & both_deep;
   // One head alone, unless the other is settled on another offset.
-  wire       one1_ok = ready[0] & span_one[0] & ~(ready[1] & ~agree12);
-  wire       one2_ok = ready[1] & span_one[1] & ~(ready[0] & ~agree12);
+  wire       one1_ok = alone[0] & (agree12 | ~ready[1]);
+  wire       one2_ok = alone[1] & (agree12 | ~ready[0]);
   wire       on1     = (off1 == offset_reg);
   wire       on2     = (off2 == offset_reg);
   // Dual: where this strobe is, relative to the transition. The subtraction runs two
