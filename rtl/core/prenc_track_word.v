@@ -143,9 +143,11 @@ module prenc_track_word #(
   localparam [SW-1:0] S_UP    = UP32[SW-1:0];
   localparam [SW-1:0] S_LIMIT = LIMIT32[SW-1:0];
   localparam [31:0]  EXT32   = EXT_MAX;
-  localparam [5:0]   E_MAX   = EXT32[5:0];
+  localparam integer EW      = $clog2(EXT_MAX + 1);  // the evidence counters' width
+  localparam [EW-1:0] E_MAX  = EXT32[EW-1:0];
   localparam [31:0]  QUIET32 = QUIET;
-  localparam [5:0]   Q_MAX   = QUIET32[5:0];
+  localparam integer QW      = $clog2(QUIET + 1);
+  localparam [QW-1:0] Q_MAX  = QUIET32[QW-1:0];
 
   reg [N-1:0]           word_reg;
   reg [N-1:0]           known_reg;
@@ -160,10 +162,10 @@ module prenc_track_word #(
   reg [SW-1:0]          score_reg;
   reg [1:0]             pending_reg;  // {up, down}
   reg [ERROR_WIDTH-1:0] errors_reg;
-  reg [5:0]             ext_lo_reg;
-  reg [5:0]             ext_hi_reg;
+  reg [EW-1:0]          ext_lo_reg;
+  reg [EW-1:0]          ext_hi_reg;
   reg                   primed_reg;  // full since the last flush: every bit read or predicted
-  reg [5:0]             quiet_reg;   // agreeing checks since the head's last disagreement
+  reg [QW-1:0]          quiet_reg;   // agreeing checks since the head's last disagreement
   reg                   supported_reg;  // law mode and score below the limit
   reg                   full_reg;       // &known_reg
   reg                   raw_checked_reg;  // raw mode: a bit read or predicted was read again
@@ -231,9 +233,9 @@ module prenc_track_word #(
 
   wire [SW:0] score_plus = {1'b0, score_reg} + {1'b0, S_UP};
   reg  [SW-1:0] score_next;
-  reg  [5:0]    quiet_law;
+  reg  [QW-1:0] quiet_law;
   wire alt_reg = dual_cw ? mismatch_lo_reg : mismatch_hi_reg;
-  wire [5:0] quiet_up = (quiet_reg == Q_MAX) ? Q_MAX : quiet_reg + 1'b1;
+  wire [QW-1:0] quiet_up = (quiet_reg == Q_MAX) ? Q_MAX : quiet_reg + 1'b1;
   // Last clock's check of the head: law mode (unless the two hypotheses of a missed
   // state predict different bits there) or raw mode; never both on one clock.
   wire scored    = (checked_reg & ~(dual & (mismatch_reg != alt_reg))) | raw_checked_reg;
@@ -242,7 +244,7 @@ module prenc_track_word #(
     score_next = score_reg;
     quiet_law  = quiet_reg;
     if (scored) begin
-      quiet_law = disagreed ? 6'd0 : quiet_up;
+      quiet_law = disagreed ? {QW{1'b0}} : quiet_up;
       if (disagreed) begin
         score_next = (score_plus > {1'b0, S_LIMIT}) ? S_LIMIT : score_plus[SW-1:0];
       end else if (score_reg != {SW{1'b0}}) begin
@@ -255,24 +257,25 @@ module prenc_track_word #(
   // &known_next of the event below (ev_up first, as there), from the registers in
   // parallel with it.
   wire down_end   = ~ev_up & ev_down & at_bottom;
-  wire full_after = (ev_up & at_top)      ? ((&known_reg[N-2:0]) & (ext_hi_reg != 6'd0)) :
-                    down_end              ? ((&known_reg[N-1:1]) & (ext_lo_reg != 6'd0)) :
+  wire full_after = (ev_up & at_top)      ? ((&known_reg[N-2:0]) & (ext_hi_reg != {EW{1'b0}})) :
+                    down_end              ? ((&known_reg[N-1:1]) & (ext_lo_reg != {EW{1'b0}})) :
                     (ev_up | ev_down)     ? (&known_reg) :
                     (strobe & ~law_reg)   ? (&(known_reg | at_index)) : (&known_reg);
 
   wire        changed        = head ^ bit_here;
   // A slide moves both ext counters one slot, opposite ways: one adder each.
-  wire [5:0]  ext_lo_step    = ext_lo_reg + {{5{~ev_up}}, 1'b1};  // +1 up, -1 down
-  wire [5:0]  ext_hi_step    = ext_hi_reg + {{5{ev_up}}, 1'b1};   // -1 up, +1 down
+  localparam [EW-1:0] E_ONE = 1;
+  wire [EW-1:0] ext_lo_step  = ext_lo_reg + (ev_up ? E_ONE : {EW{1'b1}});  // +1 up, -1 down
+  wire [EW-1:0] ext_hi_step  = ext_hi_reg + (ev_up ? {EW{1'b1}} : E_ONE);  // -1 up, +1 down
 
   reg [N-1:0]  known_next;
   reg          law_next;
   reg [SW-1:0] score_after;
   reg [1:0]    pending_next;
-  reg [5:0]    ext_lo_next;
-  reg [5:0]    ext_hi_next;
+  reg [EW-1:0] ext_lo_next;
+  reg [EW-1:0] ext_hi_next;
   reg          primed_next;
-  reg [5:0]    quiet_next;
+  reg [QW-1:0] quiet_next;
   always @* begin
     word_next    = word_reg;
     known_next   = known_reg;
@@ -286,18 +289,18 @@ module prenc_track_word #(
     if (ev_up) begin
       if (at_top) begin
         word_next   = {word_reg[N-2:0], fwd_bit};
-        known_next  = {known_reg[N-2:0], ext_hi_reg != 6'd0};
-        ext_lo_next = !known_reg[N-1] ? 6'd0 : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
-        ext_hi_next = (ext_hi_reg == 6'd0) ? 6'd0 : ext_hi_step;
+        known_next  = {known_reg[N-2:0], ext_hi_reg != {EW{1'b0}}};
+        ext_lo_next = !known_reg[N-1] ? {EW{1'b0}} : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
+        ext_hi_next = (ext_hi_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_hi_step;
       end else begin
         index_next = index_reg + 1'b1;
       end
     end else if (ev_down) begin
       if (at_bottom) begin
         word_next   = {inv_bit, word_reg[N-1:1]};
-        known_next  = {ext_lo_reg != 6'd0, known_reg[N-1:1]};
-        ext_hi_next = !known_reg[0] ? 6'd0 : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
-        ext_lo_next = (ext_lo_reg == 6'd0) ? 6'd0 : ext_lo_step;
+        known_next  = {ext_lo_reg != {EW{1'b0}}, known_reg[N-1:1]};
+        ext_hi_next = !known_reg[0] ? {EW{1'b0}} : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
+        ext_lo_next = (ext_lo_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_lo_step;
       end else begin
         index_next = index_reg - 1'b1;
       end
@@ -305,20 +308,20 @@ module prenc_track_word #(
       word_next  = (word_reg & ~at_index) | (at_index & {N{head}});
       known_next = known_reg | at_index;
       if (changed) begin
-        ext_lo_next = 6'd0;
-        ext_hi_next = 6'd0;
+        ext_lo_next = {EW{1'b0}};
+        ext_hi_next = {EW{1'b0}};
       end
     end
     if (law_reg) begin
-      ext_lo_next = 6'd0;
-      ext_hi_next = 6'd0;
+      ext_lo_next = {EW{1'b0}};
+      ext_hi_next = {EW{1'b0}};
     end
     primed_next = primed_reg | full_after;
     if (illegal && !law_reg) begin
       // The readings are in doubt (the count may be a slot off), not the window's place.
       known_next  = {N{1'b0}};
-      ext_lo_next = 6'd0;
-      ext_hi_next = 6'd0;
+      ext_lo_next = {EW{1'b0}};
+      ext_hi_next = {EW{1'b0}};
       primed_next = 1'b0;
     end
     if (law_on) begin
@@ -330,8 +333,8 @@ module prenc_track_word #(
       index_next   = {IW{1'b0}};
       law_next     = 1'b0;
       pending_next = 2'b00;
-      ext_lo_next  = 6'd0;
-      ext_hi_next  = 6'd0;
+      ext_lo_next  = {EW{1'b0}};
+      ext_hi_next  = {EW{1'b0}};
       primed_next  = 1'b0;
     end
   end
@@ -375,8 +378,8 @@ module prenc_track_word #(
       law_reg         <= 1'b0;
       score_reg       <= {SW{1'b0}};
       pending_reg     <= 2'b00;
-      ext_lo_reg      <= 6'd0;
-      ext_hi_reg      <= 6'd0;
+      ext_lo_reg      <= {EW{1'b0}};
+      ext_hi_reg      <= {EW{1'b0}};
       primed_reg      <= 1'b0;
       quiet_reg       <= Q_MAX;
       supported_reg   <= 1'b0;
@@ -404,9 +407,16 @@ module prenc_track_word #(
   assign mismatch_lo = mismatch_lo_reg;
   assign mismatch_hi = mismatch_hi_reg;
   assign errors      = errors_reg;
-  wire [6:0] ext_sum  = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
-  assign span        = (~full_reg | law_reg) ? 6'd0 :
-                       (ext_sum > {1'b0, E_MAX}) ? E_MAX : ext_sum[5:0];
+  wire [EW:0]   ext_sum  = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
+  wire [EW-1:0] span_w   = (~full_reg | law_reg) ? {EW{1'b0}} :
+                           (ext_sum > {1'b0, E_MAX}) ? E_MAX : ext_sum[EW-1:0];
+  generate
+    if (EW < 6) begin : g_span_narrow
+      assign span = {{(6 - EW){1'b0}}, span_w};
+    end else begin : g_span_full
+      assign span = span_w;
+    end
+  endgenerate
   assign settled     = (score_reg == {SW{1'b0}});
   assign quiet       = (quiet_reg == Q_MAX);
 
@@ -513,7 +523,7 @@ module prenc_track_word #(
   reg          f_clear_errors_prev;
   reg          f_count_error;
   reg [SW-1:0] f_score_prev;
-  reg [5:0]    f_quiet_prev;
+  reg [QW-1:0] f_quiet_prev;
   reg [ERROR_WIDTH-1:0] f_errors_prev;
   reg          f_raw_read;     // last clock: a raw strobe at a bit read or predicted before
   reg          f_raw_changed;  // ... that the reading changed
@@ -543,7 +553,7 @@ module prenc_track_word #(
         assert (score_reg == f_score_prev - 1'b1);
       else assert (score_reg == f_score_prev);
       if (f_scored_prev) begin
-        assert (quiet_reg == (f_dis_prev ? 6'd0 :
+        assert (quiet_reg == (f_dis_prev ? {QW{1'b0}} :
                               (f_quiet_prev == Q_MAX) ? Q_MAX : f_quiet_prev + 1'b1));
       end else begin
         assert (quiet_reg == f_quiet_prev);
