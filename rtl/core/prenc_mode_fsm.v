@@ -183,11 +183,8 @@ module prenc_mode_fsm #(
   wire       both_deep  = (&ready) & (&span_both);
   wire       lock_agree = both_deep | (|alone);
   wire       lock_alone = (alone[0] & ~ready[1]) | (alone[1] & ~ready[0]);
+  // Both heads on one offset, or one head alone unless the other is settled on another.
   wire       agree12 = (off1 == off2);
-  wire       both_ok = agree12 & both_deep;
-  // One head alone, unless the other is settled on another offset.
-  wire       one1_ok = alone[0] & (agree12 | ~ready[1]);
-  wire       one2_ok = alone[1] & (agree12 | ~ready[0]);
   wire       on1     = (off1 == offset_reg);
   wire       on2     = (off2 == offset_reg);
   // Dual: where this strobe is, relative to the transition. The subtraction runs two
@@ -275,7 +272,6 @@ module prenc_mode_fsm #(
                                     (|vote_other) ? other_ext[DUAL_VOTES:1] : votes_other_reg;
   wire [3:0] voted_new  = voted_reg | {vote_other, vote_keep};
 
-  reg [N-1:0]         offset_next;
   reg                 dual_cw_next;
   reg [N-1:0]         anchor_next;
   reg signed [RW-1:0] lo_next;
@@ -283,22 +279,31 @@ module prenc_mode_fsm #(
   reg [DUAL_VOTES-1:0] votes_keep_next;
   reg [DUAL_VOTES-1:0] votes_other_next;
   reg [3:0]           voted_next;
-  reg [1:0]           law_on_next;
+  reg [1:0]           law_on_held;
   reg [1:0]           realign_next;
   reg                 drop;  // the offset is dropped (flush, INCREMENTAL)
   reg                 won;   // a hypothesis won: the modes resume from support
 
-  // A lock on a strobe while no offset is held: which tracks, and the mode it gives.
-  wire       lock_now    = ~illegal & strobe & ~locked & (agree12 ? lock_agree : lock_alone);
-  wire [1:0] lock_law_on = both_ok ? 2'b11 : one1_ok ? 2'b01 : one2_ok ? 2'b10 : 2'b00;
-  wire [2:0] lock_mode   = both_ok ? NORMAL : one1_ok ? REDUCED_1 : REDUCED_2;
+  // A lock on a strobe while no offset is held: which tracks, and the mode it gives,
+  // from registers for either outcome of the offsets' comparison, which then chooses.
+  // Where the offsets agree either is the lock's; where not, the one head that locks.
+  wire       lock_try      = ~illegal & strobe & ~locked;
+  wire       lock_now      = lock_try & (agree12 ? lock_agree : lock_alone);
+  wire       one1_apart    = alone[0] & ~ready[1];
+  wire [1:0] law_on_agree  = ~lock_try ? 2'b00 : both_deep ? 2'b11 :
+                             alone[0] ? 2'b01 : alone[1] ? 2'b10 : 2'b00;
+  wire [1:0] law_on_apart  = ~lock_try ? 2'b00 : one1_apart ? 2'b01 :
+                             (alone[1] & ~ready[0]) ? 2'b10 : 2'b00;
+  wire [2:0] mode_agree    = ~(lock_try & lock_agree) ? mode_reg : both_deep ? NORMAL :
+                             alone[0] ? REDUCED_1 : REDUCED_2;
+  wire [2:0] mode_apart    = ~(lock_try & lock_alone) ? mode_reg : one1_apart ? REDUCED_1 : REDUCED_2;
+  wire [N-1:0] lock_offset = (~alone[0] & alone[1]) ? off2 : off1;
   // A raw track whose full word converts to the held offset rejoins (law mode).
   wire [1:0] rejoin      = {full[1] & ~lawish[1] & on2, full[0] & ~lawish[0] & on1};
 
   // The events of this clock: what they decide. The mode follows below from the
   // decisions in one flat expression (few logic levels to mode_reg).
   always @* begin
-    offset_next      = offset_reg;
     // Outside dual the hypothesis state is held at its starting values (the event's
     // way and slot, nothing visited, no votes), ready for a transition judged now.
     dual_cw_next     = dual_cw_ahead;
@@ -308,7 +313,7 @@ module prenc_mode_fsm #(
     votes_keep_next  = dual_reg ? votes_keep_reg : {DUAL_VOTES{1'b0}};
     votes_other_next = dual_reg ? votes_other_reg : {DUAL_VOTES{1'b0}};
     voted_next       = dual_reg ? voted_reg : 4'd0;
-    law_on_next      = 2'b00;
+    law_on_held      = 2'b00;
     realign_next     = 2'b00;
     drop             = 1'b0;
     won              = 1'b0;
@@ -316,14 +321,9 @@ module prenc_mode_fsm #(
       // enter (below) opens the two hypotheses; otherwise a held offset drops.
       drop = locked & ~enter;
     end else if (strobe && !locked) begin
-      if (both_ok || one1_ok) begin
-        offset_next = off1;
-      end else if (one2_ok) begin
-        offset_next = off2;
-      end
-      law_on_next = lock_law_on;
+      // A lock (lock_now, below), chosen by the offsets' comparison.
     end else if (strobe && !dual_reg) begin
-      law_on_next = rejoin;
+      law_on_held = rejoin;
     end else if (strobe) begin
       if (far) begin
         drop = 1'b1;
@@ -340,7 +340,6 @@ module prenc_mode_fsm #(
         end else if (other_new[DUAL_VOTES-1] && voted_new[2] && voted_new[3]) begin
           // The other way: the count is one slot off; the offset takes it.
           won          = 1'b1;
-          offset_next  = offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1};  // -1 CW, +1 CCW
           realign_next = dual_cw_reg ? 2'b01 : 2'b10;
         end
       end
@@ -356,16 +355,21 @@ module prenc_mode_fsm #(
   // Two hypotheses stay open (or open now) while both tracks support the offset.
   wire       dual_keep   = (illegal & enter) | (dual_reg & ~won);
   wire       dual_next   = dual_keep & ~drop & (sup == 2'b11);
-  wire       resume      = ~drop & ~dual_keep & ~lock_now & (valid_now | won);
-  wire [2:0] mode_next   = (drop | dual_keep) ? INCREMENTAL :
-                           lock_now ? lock_mode :
-                           resume ? s_mode : mode_reg;
+  // (A lock needs no offset held, resume one held: never both.)
+  wire       resume      = ~drop & ~dual_keep & (valid_now | won);
+  wire [2:0] mode_held   = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
+  wire [2:0] mode_next   = locked ? mode_held : agree12 ? mode_agree : mode_apart;
+  wire [1:0] law_on_next  = locked ? law_on_held : agree12 ? law_on_agree : law_on_apart;
+  // The offset: a lock's (outside dual), or the other hypothesis's when it wins (in dual).
+  wire         offset_en   = lock_now | (realign_next != 2'b00);
+  wire [N-1:0] offset_load = dual_reg ? offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1} :  // -1 CW, +1 CCW
+                                        lock_offset;
   wire       flush_all   = drop | (dual_keep & (sup != 2'b11)) | (resume & (support_now == 2'b00));
   wire [1:0] flush_next  = {flush_all, flush_all};
 
   always @(posedge clk) begin
     mode_reg        <= mode_next;
-    offset_reg      <= offset_next;
+    if (offset_en) offset_reg <= offset_load;
     dual_reg        <= dual_next;
     dual_cw_reg     <= dual_cw_next;
     anchor_reg      <= anchor_next;
