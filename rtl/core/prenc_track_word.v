@@ -133,10 +133,8 @@ module prenc_track_word #(
     end
   endgenerate
 
-  localparam integer IW = (N <= 2) ? 1 : $clog2(N);
   localparam integer SW = $clog2(SCORE_LIMIT + 1);
-  localparam [31:0]  LAST32  = N - 1;
-  localparam [IW-1:0] LAST   = LAST32[IW-1:0];
+  localparam [N-1:0] INDEX0  = {1'b1, {(N - 1){1'b0}}};  // at_index_reg at index 0
   localparam [31:0]  HO32    = HEAD_OFFSET;
   localparam [31:0]  UP32    = SCORE_UP;
   localparam [31:0]  LIMIT32 = SCORE_LIMIT;
@@ -151,7 +149,7 @@ module prenc_track_word #(
 
   reg [N-1:0]           word_reg;
   reg [N-1:0]           known_reg;
-  reg [IW-1:0]          index_reg;
+  reg [N-1:0]           at_index_reg;  // the index one-hot: bit N-1-i at index i
   reg                   law_reg;
   reg [N-1:0]           base_reg;
   reg                   strobe_reg;
@@ -175,13 +173,13 @@ module prenc_track_word #(
   // applied to the next word and registered with it, and the window's ends: off the
   // path from the word to the converter's address.
   reg  [N-1:0] word_next;
-  reg  [IW-1:0] index_next;
+  reg  [N-1:0] at_index_next;
   wire fwd_next;
   wire inv_next;
   reg  fwd_bit;
   reg  inv_bit;
-  reg  at_top;     // index_reg == N - 1
-  reg  at_bottom;  // index_reg == 0
+  wire at_top    = at_index_reg[0];      // index N - 1
+  wire at_bottom = at_index_reg[N-1];    // index 0
 
   prenc_disc_law #(
     .N    (N),
@@ -192,25 +190,12 @@ module prenc_track_word #(
     .inverse_bit (inv_next)
   );
 
-  // Index i is word bit N-1-i: the window in count order.
-  wire [N-1:0] in_order;
-  genvar g;
-  generate
-    for (g = 0; g < N; g = g + 1) begin : g_order
-      assign in_order[g] = word_reg[N-1-g];
-    end
-  endgenerate
-  wire bit_here = in_order[index_reg];
-  // Word bit N-1-index one-hot: the bit a raw strobe writes (compares with constants).
-  wire [N-1:0] at_index;
-  generate
-    for (g = 0; g < N; g = g + 1) begin : g_at_index
-      localparam [31:0] AT32 = N - 1 - g;
-      assign at_index[g] = (index_reg == AT32[IW-1:0]);
-    end
-  endgenerate
-  wire bit_lo   = at_bottom ? inv_bit : in_order[index_reg - 1'b1];
-  wire bit_hi   = at_top ? fwd_bit : in_order[index_reg + 1'b1];
+  // Index i is word bit N-1-i (the window in count order): at_index_reg bit N-1-i.
+  // The reading's bit and its neighbours in count order (word bits one up / one down).
+  wire [N-1:0] at_index = at_index_reg;
+  wire bit_here = |(word_reg & at_index);
+  wire bit_lo   = at_bottom ? inv_bit : |(word_reg & {at_index[N-2:0], 1'b0});
+  wire bit_hi   = at_top ? fwd_bit : |(word_reg & {1'b0, at_index[N-1:1]});
 
   // A realignment waits in pending_reg and takes the first clock without an event
   // after the judge's pulse.
@@ -279,7 +264,7 @@ module prenc_track_word #(
   always @* begin
     word_next    = word_reg;
     known_next   = known_reg;
-    index_next   = index_reg;
+    at_index_next = at_index_reg;
     law_next     = law_reg;
     score_after  = score_next;
     pending_next = (idle ? 2'b00 : pending_reg) | {realign_up, realign_down};
@@ -293,7 +278,7 @@ module prenc_track_word #(
         ext_lo_next = !known_reg[N-1] ? {EW{1'b0}} : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
         ext_hi_next = (ext_hi_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_hi_step;
       end else begin
-        index_next = index_reg + 1'b1;
+        at_index_next = {1'b0, at_index_reg[N-1:1]};
       end
     end else if (ev_down) begin
       if (at_bottom) begin
@@ -302,7 +287,7 @@ module prenc_track_word #(
         ext_hi_next = !known_reg[0] ? {EW{1'b0}} : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
         ext_lo_next = (ext_lo_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_lo_step;
       end else begin
-        index_next = index_reg - 1'b1;
+        at_index_next = {at_index_reg[N-2:0], 1'b0};
       end
     end else if (strobe && !law_reg) begin
       word_next  = (word_reg & ~at_index) | (at_index & {N{head}});
@@ -330,7 +315,7 @@ module prenc_track_word #(
     end
     if (flush || demote) begin  // the score stays: it is the head's record
       known_next   = {N{1'b0}};
-      index_next   = {IW{1'b0}};
+      at_index_next = INDEX0;
       law_next     = 1'b0;
       pending_next = 2'b00;
       ext_lo_next  = {EW{1'b0}};
@@ -343,10 +328,8 @@ module prenc_track_word #(
     word_reg        <= word_next;
     fwd_bit         <= fwd_next;
     inv_bit         <= inv_next;
-    at_top          <= (index_next == LAST);
-    at_bottom       <= (index_next == {IW{1'b0}});
     known_reg       <= known_next;
-    index_reg       <= index_next;
+    at_index_reg    <= at_index_next;
     law_reg         <= law_next;
     score_reg       <= score_after;
     pending_reg     <= pending_next;
@@ -372,9 +355,7 @@ module prenc_track_word #(
     end
     if (rst) begin
       known_reg       <= {N{1'b0}};
-      index_reg       <= {IW{1'b0}};
-      at_top          <= 1'b0;
-      at_bottom       <= 1'b1;
+      at_index_reg    <= INDEX0;
       law_reg         <= 1'b0;
       score_reg       <= {SW{1'b0}};
       pending_reg     <= 2'b00;
@@ -444,6 +425,27 @@ module prenc_track_word #(
       f_bit = F_S[p];
     end
   endfunction
+  localparam integer IW = (N <= 2) ? 1 : $clog2(N);
+  localparam [31:0]  LAST32 = N - 1;
+  localparam [IW-1:0] LAST  = LAST32[IW-1:0];
+  wire [N-1:0] in_order;  // the window in count order
+  genvar g;
+  generate
+    for (g = 0; g < N; g = g + 1) begin : g_order
+      assign in_order[g] = word_reg[N-1-g];
+    end
+  endgenerate
+  function automatic [IW-1:0] f_index_of;  // the index of the one-hot
+    input [N-1:0] at;
+    integer i;
+    begin
+      f_index_of = {IW{1'b0}};
+      for (i = 0; i < N; i = i + 1) begin
+        if (at[N - 1 - i]) f_index_of = i[IW-1:0];
+      end
+    end
+  endfunction
+  wire [IW-1:0] index_reg = f_index_of(at_index_reg);
   reg f_past_valid = 1'b0;
   reg f_rst_prev;
   reg [N-1:0] f_slot_prev;
@@ -484,6 +486,7 @@ module prenc_track_word #(
   wire [N-1:0] f_here = f_p_prev + {{(N - IW){1'b0}}, f_index_prev};
   always @(*) begin
     if (f_past_valid) begin
+      assert (at_index_reg != {N{1'b0}} && (at_index_reg & (at_index_reg - 1'b1)) == {N{1'b0}});
       assert (index_reg <= LAST);
       assert (at_top == (index_reg == LAST) && at_bottom == (index_reg == {IW{1'b0}}));
       assert (full_reg == (&known_reg));
