@@ -184,7 +184,9 @@ module prenc_mode_fsm #(
   wire       lock_agree = both_deep | (|alone);
   wire       lock_alone = (alone[0] & ~ready[1]) | (alone[1] & ~ready[0]);
   // Both heads on one offset, or one head alone unless the other is settled on another.
-  wire       agree12 = (off1 == off2);
+  // Kept as one net: the decisions below take it as their last input (without the
+  // attribute Yosys's ABC merged it into them, two LUT levels deeper on iCE40).
+  (* keep *) wire agree12 = (off1 == off2);
   wire       on1     = (off1 == offset_reg);
   wire       on2     = (off2 == offset_reg);
   // Dual: where this strobe is, relative to the transition. The subtraction runs two
