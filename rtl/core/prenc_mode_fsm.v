@@ -186,7 +186,18 @@ module prenc_mode_fsm #(
   // Both heads on one offset, or one head alone unless the other is settled on another.
   // Kept as one net: the decisions below take it as their last input (without the
   // attribute Yosys's ABC merged it into them, two LUT levels deeper on iCE40).
-  (* keep *) wire agree12 = (off1 == off2);
+  // In pairs of bits, kept (ABC otherwise chains the comparison a level deeper).
+  localparam integer NP = (N + 1) / 2;
+  wire [2*NP-1:0] off1_p = {{(2 * NP - N){1'b0}}, off1};
+  wire [2*NP-1:0] off2_p = {{(2 * NP - N){1'b0}}, off2};
+  (* keep *) wire [NP-1:0] agree_pair;
+  genvar gp;
+  generate
+    for (gp = 0; gp < NP; gp = gp + 1) begin : g_agree_pair
+      assign agree_pair[gp] = (off1_p[2*gp+1:2*gp] == off2_p[2*gp+1:2*gp]);
+    end
+  endgenerate
+  (* keep *) wire agree12 = &agree_pair;
   wire       on1     = (off1 == offset_reg);
   wire       on2     = (off2 == offset_reg);
   // Dual: where this strobe is, relative to the transition. The subtraction runs two
@@ -232,9 +243,15 @@ module prenc_mode_fsm #(
   // Fresh (outside the slots visited since the transition), also one clock ahead:
   // against the interval as this clock's event leaves it.
   wire enter  = illegal & valid_now & ~dual_reg & (sup == 2'b11);
-  wire widen  = ~illegal & strobe & dual_reg & ~far & fresh;
-  wire below  = (rel_d < lo_reg) & ~(widen & (rel_d >= rel));  // used in dual only
-  wire above  = (rel_d > hi_reg) & ~(widen & (rel_d <= rel));
+  // The four comparisons kept as nets, each its own carry chain (merged, ABC made
+  // them ten LUT levels deep).
+  (* keep *) wire widen       = ~illegal & strobe & dual_reg & ~far & fresh;
+  (* keep *) wire below_reg   = (rel_d < lo_reg);
+  (* keep *) wire above_reg   = (rel_d > hi_reg);
+  (* keep *) wire not_above   = (rel_d >= rel);  // not above this event
+  (* keep *) wire not_below   = (rel_d <= rel);
+  wire below  = below_reg & ~(widen & not_above);  // used in dual only
+  wire above  = above_reg & ~(widen & not_below);
   reg  fresh;
   reg  below_lo;  // rel < lo_reg (this event below the interval), registered with it
   reg  above_hi;  // rel > hi_reg
@@ -360,8 +377,14 @@ module prenc_mode_fsm #(
   // (A lock needs no offset held, resume one held: never both.)
   wire       resume      = ~drop & ~dual_keep & (valid_now | won);
   wire [2:0] mode_held   = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
-  wire [2:0] mode_next   = locked ? mode_held : agree12 ? mode_agree : mode_apart;
-  wire [1:0] law_on_next  = locked ? law_on_held : agree12 ? law_on_agree : law_on_apart;
+  // For either outcome of the offsets' comparison, kept as nets so that it is the
+  // last input (one LUT level) of the mode and law_on.
+  (* keep *) wire [2:0] mode_if_agree   = locked ? mode_held : mode_agree;
+  (* keep *) wire [2:0] mode_if_apart   = locked ? mode_held : mode_apart;
+  (* keep *) wire [1:0] law_on_if_agree = locked ? law_on_held : law_on_agree;
+  (* keep *) wire [1:0] law_on_if_apart = locked ? law_on_held : law_on_apart;
+  wire [2:0] mode_next   = agree12 ? mode_if_agree : mode_if_apart;
+  wire [1:0] law_on_next = agree12 ? law_on_if_agree : law_on_if_apart;
   // The offset: a lock's (outside dual), or the other hypothesis's when it wins (in dual).
   wire         offset_en   = lock_now | (realign_next != 2'b00);
   wire [N-1:0] offset_load = dual_reg ? offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1} :  // -1 CW, +1 CCW

@@ -170,28 +170,14 @@ module prenc_track_word #(
   reg                   raw_changed_reg;  // ... and the reading changed it
 
   // The disc's laws on the window (datasheet; the bracket is the de Bruijn term),
-  // applied to the next word and registered with it, and the window's ends: off the
-  // path from the word to the converter's address.
-  reg  [N-1:0] word_next;
+  // registered with the word (fwd_bit, inv_bit): off the path from the word to the
+  // converter's address.
   reg  [N-1:0] at_index_next;
-  wire fwd_next;
-  wire inv_next;
   reg  fwd_bit;
   reg  inv_bit;
   wire at_top    = at_index_reg[0];      // index N - 1
   wire at_bottom = at_index_reg[N-1];    // index 0
-
-  prenc_disc_law #(
-    .N    (N),
-    .TAPS (TAPS)
-  ) u_law (
-    .word        (word_next),
-    .forward_bit (fwd_next),
-    .inverse_bit (inv_next)
-  );
-
   // Index i is word bit N-1-i (the window in count order): at_index_reg bit N-1-i.
-  // The reading's bit and its neighbours in count order (word bits one up / one down).
   wire [N-1:0] at_index = at_index_reg;
   wire bit_here = |(word_reg & at_index);
   wire bit_lo   = at_bottom ? inv_bit : |(word_reg & {at_index[N-2:0], 1'b0});
@@ -239,13 +225,34 @@ module prenc_track_word #(
   end
   wire demote = law_reg & (score_reg >= S_LIMIT);  // registered: off the score path
 
-  // &known_next of the event below (ev_up first, as there), from the registers in
-  // parallel with it.
-  wire down_end   = ~ev_up & ev_down & at_bottom;
-  wire full_after = (ev_up & at_top)      ? ((&known_reg[N-2:0]) & (ext_hi_reg != {EW{1'b0}})) :
-                    down_end              ? ((&known_reg[N-1:1]) & (ext_lo_reg != {EW{1'b0}})) :
-                    (ev_up | ev_down)     ? (&known_reg) :
-                    (strobe & ~law_reg)   ? (&(known_reg | at_index)) : (&known_reg);
+  // The word changes in one of three ways (never two at once): a slide past the top
+  // or the bottom, or a raw strobe's write (a strobe is never idle: no realignment).
+  // Each way's word, its laws and &known are computed from registers, and the way is
+  // chosen last: the next word goes to the converter's address.
+  wire slide_up   = ev_up & at_top;
+  wire slide_down = ~ev_up & ev_down & at_bottom;
+  wire write_raw  = strobe & ~up & ~down & ~law_reg;
+  wire [N-1:0] word_up    = {word_reg[N-2:0], fwd_bit};
+  wire [N-1:0] word_down  = {inv_bit, word_reg[N-1:1]};
+  wire [N-1:0] word_write = (word_reg & ~at_index) | (at_index & {N{head}});
+  wire [N-1:0] word_next  = slide_up ? word_up : slide_down ? word_down :
+                            write_raw ? word_write : word_reg;
+  // A slide keeps the law's own bit at the end it leaves: inv(word_up) is the bit
+  // slid out, word_reg[N-1], and fwd(word_down) is word_reg[0] (every word is a window
+  // of the disc; the proofs check it).
+  wire fwd_up, inv_up_law, fwd_down_law, inv_down, fwd_write, inv_write;
+  prenc_disc_law #(.N (N), .TAPS (TAPS)) u_law_up (
+    .word (word_up), .forward_bit (fwd_up), .inverse_bit (inv_up_law));
+  prenc_disc_law #(.N (N), .TAPS (TAPS)) u_law_down (
+    .word (word_down), .forward_bit (fwd_down_law), .inverse_bit (inv_down));
+  prenc_disc_law #(.N (N), .TAPS (TAPS)) u_law_write (
+    .word (word_write), .forward_bit (fwd_write), .inverse_bit (inv_write));
+  wire unused_laws = &{1'b0, inv_up_law, fwd_down_law};
+  wire fwd_next   = write_raw ? fwd_write : slide_up ? fwd_up : slide_down ? word_reg[0] : fwd_bit;
+  wire inv_next   = write_raw ? inv_write : slide_up ? word_reg[N-1] : slide_down ? inv_down : inv_bit;
+  wire full_after = slide_up   ? ((&known_reg[N-2:0]) & (ext_hi_reg != {EW{1'b0}})) :
+                    slide_down ? ((&known_reg[N-1:1]) & (ext_lo_reg != {EW{1'b0}})) :
+                    write_raw  ? (&(known_reg | at_index)) : (&known_reg);
 
   wire        changed        = head ^ bit_here;
   // A slide moves both ext counters one slot, opposite ways: one adder each.
@@ -262,7 +269,6 @@ module prenc_track_word #(
   reg          primed_next;
   reg [QW-1:0] quiet_next;
   always @* begin
-    word_next    = word_reg;
     known_next   = known_reg;
     at_index_next = at_index_reg;
     law_next     = law_reg;
@@ -273,7 +279,6 @@ module prenc_track_word #(
     quiet_next   = quiet_law;
     if (ev_up) begin
       if (at_top) begin
-        word_next   = {word_reg[N-2:0], fwd_bit};
         known_next  = {known_reg[N-2:0], ext_hi_reg != {EW{1'b0}}};
         ext_lo_next = !known_reg[N-1] ? {EW{1'b0}} : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
         ext_hi_next = (ext_hi_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_hi_step;
@@ -282,7 +287,6 @@ module prenc_track_word #(
       end
     end else if (ev_down) begin
       if (at_bottom) begin
-        word_next   = {inv_bit, word_reg[N-1:1]};
         known_next  = {ext_lo_reg != {EW{1'b0}}, known_reg[N-1:1]};
         ext_hi_next = !known_reg[0] ? {EW{1'b0}} : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
         ext_lo_next = (ext_lo_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_lo_step;
@@ -290,7 +294,6 @@ module prenc_track_word #(
         at_index_next = {at_index_reg[N-2:0], 1'b0};
       end
     end else if (strobe && !law_reg) begin
-      word_next  = (word_reg & ~at_index) | (at_index & {N{head}});
       known_next = known_reg | at_index;
       if (changed) begin
         ext_lo_next = {EW{1'b0}};
@@ -446,6 +449,10 @@ module prenc_track_word #(
     end
   endfunction
   wire [IW-1:0] index_reg = f_index_of(at_index_reg);
+  // A slide keeps the law's bit at the end it leaves (every word is a window).
+  always @(*) begin
+    assert (inv_up_law == word_reg[N-1] && fwd_down_law == word_reg[0]);
+  end
   reg f_past_valid = 1'b0;
   reg f_rst_prev;
   reg [N-1:0] f_slot_prev;
