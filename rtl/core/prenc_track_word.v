@@ -359,6 +359,12 @@ module prenc_track_word #(
     if (rst) begin
       known_reg       <= {N{1'b0}};
       at_index_reg    <= INDEX0;
+      // The all-zero word and its laws: 0^N is followed and preceded by a 1 on
+      // every de Bruijn disc. The laws then stay the word's (each way the word
+      // changes computes them; holding keeps them).
+      word_reg        <= {N{1'b0}};
+      fwd_bit         <= 1'b1;
+      inv_bit         <= 1'b1;
       law_reg         <= 1'b0;
       score_reg       <= {SW{1'b0}};
       pending_reg     <= 2'b00;
@@ -449,10 +455,6 @@ module prenc_track_word #(
     end
   endfunction
   wire [IW-1:0] index_reg = f_index_of(at_index_reg);
-  // A slide keeps the law's bit at the end it leaves (every word is a window).
-  always @(*) begin
-    assert (inv_up_law == word_reg[N-1] && fwd_down_law == word_reg[0]);
-  end
   reg f_past_valid = 1'b0;
   reg f_rst_prev;
   reg [N-1:0] f_slot_prev;
@@ -460,6 +462,13 @@ module prenc_track_word #(
     f_past_valid <= 1'b1;
     f_rst_prev   <= rst;
     f_slot_prev  <= slot;
+  end
+  // A slide keeps the law's bit at the end it leaves (every word is a window, and
+  // the registered laws are the word's since reset).
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      assert (inv_up_law == word_reg[N-1] && fwd_down_law == word_reg[0]);
+    end
   end
   initial assume (rst);
   // The core's count: it moves one slot with up or down, otherwise it holds.
