@@ -197,7 +197,8 @@ module prenc_mode_fsm #(
       assign agree_pair[gp] = (off1_p[2*gp+1:2*gp] == off2_p[2*gp+1:2*gp]);
     end
   endgenerate
-  (* keep *) wire agree12 = &agree_pair;
+  (* keep *) wire agree12;
+  assign agree12 = &agree_pair;
   wire       on1     = (off1 == offset_reg);
   wire       on2     = (off2 == offset_reg);
   // Dual: where this strobe is, relative to the transition. The subtraction runs two
@@ -245,11 +246,16 @@ module prenc_mode_fsm #(
   wire enter  = illegal & valid_now & ~dual_reg & (sup == 2'b11);
   // The four comparisons kept as nets, each its own carry chain (merged, ABC made
   // them ten LUT levels deep).
-  (* keep *) wire widen       = ~illegal & strobe & dual_reg & ~far & fresh;
-  (* keep *) wire below_reg   = (rel_d < lo_reg);
-  (* keep *) wire above_reg   = (rel_d > hi_reg);
-  (* keep *) wire not_above   = (rel_d >= rel);  // not above this event
-  (* keep *) wire not_below   = (rel_d <= rel);
+  (* keep *) wire widen;
+  assign widen = ~illegal & strobe & dual_reg & ~far & fresh;
+  (* keep *) wire below_reg;
+  assign below_reg = (rel_d < lo_reg);
+  (* keep *) wire above_reg;
+  assign above_reg = (rel_d > hi_reg);
+  (* keep *) wire not_above;  // not above this event
+  assign not_above = (rel_d >= rel);
+  (* keep *) wire not_below;
+  assign not_below = (rel_d <= rel);
   wire below  = below_reg & ~(widen & not_above);  // used in dual only
   wire above  = above_reg & ~(widen & not_below);
   reg  fresh;
@@ -315,7 +321,8 @@ module prenc_mode_fsm #(
                              (alone[1] & ~ready[0]) ? 2'b10 : 2'b00;
   wire [2:0] mode_agree    = ~(lock_try & lock_agree) ? mode_reg : both_deep ? NORMAL :
                              alone[0] ? REDUCED_1 : REDUCED_2;
-  wire [2:0] mode_apart    = ~(lock_try & lock_alone) ? mode_reg : one1_apart ? REDUCED_1 : REDUCED_2;
+  wire [2:0] mode_apart    = ~(lock_try & lock_alone) ? mode_reg :
+                             one1_apart ? REDUCED_1 : REDUCED_2;
   wire [N-1:0] lock_offset = (~alone[0] & alone[1]) ? off2 : off1;
   // A raw track whose full word converts to the held offset rejoins (law mode).
   wire [1:0] rejoin      = {full[1] & ~lawish[1] & on2, full[0] & ~lawish[0] & on1};
@@ -379,16 +386,20 @@ module prenc_mode_fsm #(
   wire [2:0] mode_held   = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
   // For either outcome of the offsets' comparison, kept as nets so that it is the
   // last input (one LUT level) of the mode and law_on.
-  (* keep *) wire [2:0] mode_if_agree   = locked ? mode_held : mode_agree;
-  (* keep *) wire [2:0] mode_if_apart   = locked ? mode_held : mode_apart;
-  (* keep *) wire [1:0] law_on_if_agree = locked ? law_on_held : law_on_agree;
-  (* keep *) wire [1:0] law_on_if_apart = locked ? law_on_held : law_on_apart;
+  (* keep *) wire [2:0] mode_if_agree;
+  assign mode_if_agree = locked ? mode_held : mode_agree;
+  (* keep *) wire [2:0] mode_if_apart;
+  assign mode_if_apart = locked ? mode_held : mode_apart;
+  (* keep *) wire [1:0] law_on_if_agree;
+  assign law_on_if_agree = locked ? law_on_held : law_on_agree;
+  (* keep *) wire [1:0] law_on_if_apart;
+  assign law_on_if_apart = locked ? law_on_held : law_on_apart;
   wire [2:0] mode_next   = agree12 ? mode_if_agree : mode_if_apart;
   wire [1:0] law_on_next = agree12 ? law_on_if_agree : law_on_if_apart;
   // The offset: a lock's (outside dual), or the other hypothesis's when it wins (in dual).
   wire         offset_en   = lock_now | (realign_next != 2'b00);
-  wire [N-1:0] offset_load = dual_reg ? offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1} :  // -1 CW, +1 CCW
-                                        lock_offset;
+  wire [N-1:0] offset_load = dual_reg ? offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1} :  // -1 CW
+                                        lock_offset;                                   // +1 CCW
   wire       flush_all   = drop | (dual_keep & (sup != 2'b11)) | (resume & (support_now == 2'b00));
   wire [1:0] flush_next  = {flush_all, flush_all};
 

@@ -248,8 +248,10 @@ module prenc_track_word #(
   prenc_disc_law #(.N (N), .TAPS (TAPS)) u_law_write (
     .word (word_write), .forward_bit (fwd_write), .inverse_bit (inv_write));
   wire unused_laws = &{1'b0, inv_up_law, fwd_down_law};
-  wire fwd_next   = write_raw ? fwd_write : slide_up ? fwd_up : slide_down ? word_reg[0] : fwd_bit;
-  wire inv_next   = write_raw ? inv_write : slide_up ? word_reg[N-1] : slide_down ? inv_down : inv_bit;
+  wire fwd_next   = write_raw ? fwd_write : slide_up ? fwd_up :
+                    slide_down ? word_reg[0] : fwd_bit;
+  wire inv_next   = write_raw ? inv_write : slide_up ? word_reg[N-1] :
+                    slide_down ? inv_down : inv_bit;
   wire full_after = slide_up   ? ((&known_reg[N-2:0]) & (ext_hi_reg != {EW{1'b0}})) :
                     slide_down ? ((&known_reg[N-1:1]) & (ext_lo_reg != {EW{1'b0}})) :
                     write_raw  ? (&(known_reg | at_index)) : (&known_reg);
