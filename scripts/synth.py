@@ -5,6 +5,7 @@
     python scripts/synth.py --board icebreaker [--bits 10] [--out build/synth]
     python scripts/synth.py --board ulx3s
     python scripts/synth.py --core ice40-hx8k --bits 16      # the core alone, no bitstream
+    python scripts/synth.py --core ice40-up5k --top prenc_core_harness   # few pins: the UP5K
 
 Steps, every tool from PyPI (YoWASP builds, installed by the Makefile):
 
@@ -291,7 +292,8 @@ def taps_mask(taps: tuple[int, ...]) -> int:
 
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
                top: str = "prenc_core", seed: int = 1) -> Result:
-    """The reader core alone (or prenc_wb, the core on Wishbone), placed and routed."""
+    """The reader core alone (or in its few-pin harness, or prenc_wb, the core on Wishbone), placed
+    and routed."""
     rom = rom_for(bits, out)
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
     return build(top, file_list(list_file(top)), target, params, freq_mhz, out, bitstream=False,
@@ -330,8 +332,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--bits", type=int, default=10, help="N, the code word length (default 10)")
     parser.add_argument("--baud", type=int, help="UART baud rate (default: the board's, 115200)")
     parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
-    parser.add_argument("--top", choices=("prenc_core", "prenc_wb", "prenc_wb_harness"), default="prenc_core",
-                        help="with --core: the core alone, on its Wishbone bus (prenc_wb), or that with "
+    parser.add_argument("--top", choices=("prenc_core", "prenc_core_harness", "prenc_wb", "prenc_wb_harness"),
+                        default="prenc_core",
+                        help="with --core: the core alone, the core with its outputs folded into one pin "
+                             "(prenc_core_harness, for the UP5K), on its Wishbone bus (prenc_wb), or that with "
                              "an LFSR for bus master and one pin out (prenc_wb_harness, for the UP5K)")
     parser.add_argument("--out", type=Path, help="output folder (default build/synth/<board or core>)")
     args = parser.parse_args(argv)

@@ -11,7 +11,8 @@ import sys
 
 import pytest
 
-from runner import REPO, SIM_BUILD
+from runner import REPO, SIM_BUILD, rom_file
+from yosys import synthesize
 
 sys.path.insert(0, str(REPO / "scripts"))
 import synth  # noqa: E402
@@ -41,6 +42,32 @@ def test_the_wishbone_core_meets_the_boards_clocks(target, top, clock_mhz):
     result = synth.core_build(target, 10, clock_mhz, out, top=top)
     assert result.timing_met
     assert result.used(synth.TARGETS[target].brams)[0] >= 1, "the ROM must be in block RAM"
+
+
+def test_the_core_places_on_the_up5k_in_its_few_pin_harness():
+    """The UP5K's figure for the core (make bench): its 48 pins are fewer than the core's
+    ports, so the core goes in prenc_core_harness, which must place, route and meet the
+    iCEBreaker's 24 MHz with both ROMs in block RAM."""
+    out = SIM_BUILD / "boards" / "core_harness-ice40-up5k"
+    result = synth.core_build("ice40-up5k", 10, 24.0, out, top="prenc_core_harness")
+    assert result.timing_met
+    assert result.used(synth.TARGETS["ice40-up5k"].brams)[0] == 6, "two converters, 3 block RAMs each"
+
+
+def test_the_harness_keeps_all_of_the_core():
+    """Folding the outputs must keep every output observable: a harness that dropped
+    outputs would let Yosys remove the logic behind them (the error counters alone are
+    16 registers each). At N = 10 the harness has its fold's 49 registers (36, 9, 3 and
+    1) and all but one of the core's 416 (Yosys finds one redundant), and at least the
+    core's LUTs (ABC merges the first fold stage into the logic before it)."""
+    def ffs_luts(top):
+        cells = synthesize(top, "ice40", {"ROM_FILE": rom_file(10)}).cells
+        return sum(n for c, n in cells.items() if c.startswith("SB_DFF")), cells.get("SB_LUT4", 0)
+
+    core_ff, core_lut = ffs_luts("prenc_core")
+    harness_ff, harness_lut = ffs_luts("prenc_core_harness")
+    assert harness_ff >= core_ff + 48, (core_ff, harness_ff)
+    assert harness_lut >= core_lut, (core_lut, harness_lut)
 
 
 def test_a_missing_rom_fails_the_build():
