@@ -44,8 +44,9 @@ module prenc_uart_rx #(
 
   localparam [31:0] FULL_32 = CLKS_PER_BIT - 1;
   localparam [31:0] HALF_32 = CLKS_PER_BIT / 2 - 1;
-  localparam [15:0] FULL    = FULL_32[15:0];
-  localparam [15:0] HALF    = HALF_32[15:0];
+  localparam integer TW     = $clog2(CLKS_PER_BIT);  // the bit timer, as wide as a bit needs
+  localparam [TW-1:0] FULL  = FULL_32[TW-1:0];
+  localparam [TW-1:0] HALF  = HALF_32[TW-1:0];
 
   localparam [1:0] IDLE  = 2'd0;
   localparam [1:0] START = 2'd1;
@@ -55,7 +56,7 @@ module prenc_uart_rx #(
   reg        rx_q1;
   reg        rx_q2;
   reg [1:0]  state;
-  reg [15:0] timer;
+  reg [TW-1:0] timer;
   reg [3:0]  bit_index;  // 0..7 data, 8 stop
   reg [7:0]  shift;
   reg        valid_reg;
@@ -74,8 +75,8 @@ module prenc_uart_rx #(
         end
       end
       START: begin
-        if (timer != 16'd0) begin
-          timer <= timer - 16'd1;
+        if (timer != {TW{1'b0}}) begin
+          timer <= timer - 1'b1;
         end else if (rx_q2) begin
           state <= IDLE;  // too short for a start bit
         end else begin
@@ -85,8 +86,8 @@ module prenc_uart_rx #(
         end
       end
       BITS: begin
-        if (timer != 16'd0) begin
-          timer <= timer - 16'd1;
+        if (timer != {TW{1'b0}}) begin
+          timer <= timer - 1'b1;
         end else if (bit_index != 4'd8) begin
           shift     <= {rx_q2, shift[7:1]};
           bit_index <= bit_index + 4'd1;
