@@ -59,7 +59,8 @@ module prenc_frame_rx #(
   localparam [31:0] MAX_LEN_32 = MAX_LEN;
   localparam [7:0]  MAX_LEN_8  = MAX_LEN_32[7:0];
   localparam [31:0] TIMEOUT_32 = TIMEOUT - 1;
-  localparam [23:0] IDLE_LIMIT = TIMEOUT_32[23:0];
+  localparam integer IW        = (TIMEOUT < 2) ? 1 : $clog2(TIMEOUT);  // idle, up to TIMEOUT - 1 in a frame
+  localparam [IW-1:0] IDLE_LIMIT = TIMEOUT_32[IW-1:0];
 
   localparam [2:0] HUNT    = 3'd0;
   localparam [2:0] TYPE    = 3'd1;
@@ -75,7 +76,7 @@ module prenc_frame_rx #(
   reg [8*MAX_LEN-1:0]   payload;
   reg [15:0]            crc;
   reg [7:0]             crc_hi;
-  reg [23:0]            idle;
+  reg [IW-1:0]          idle;
   reg                   valid_reg;
   reg                   error_reg;
   reg [7:0]             out_type;
@@ -94,13 +95,13 @@ module prenc_frame_rx #(
     valid_reg <= 1'b0;
     error_reg <= 1'b0;
     if (state != HUNT) begin
-      idle <= idle + 24'd1;
+      idle <= idle + 1'b1;
     end
     if (state != HUNT && (byte_error || (!byte_valid && idle == IDLE_LIMIT))) begin
       state     <= HUNT;
       error_reg <= 1'b1;
     end else if (byte_valid) begin
-      idle <= 24'd0;
+      idle <= {IW{1'b0}};
       case (state)
         HUNT: begin
           if (byte_data == SOF) begin
@@ -154,7 +155,7 @@ module prenc_frame_rx #(
     end
     if (rst) begin
       state       <= HUNT;
-      idle        <= 24'd0;
+      idle        <= {IW{1'b0}};
       valid_reg   <= 1'b0;
       error_reg   <= 1'b0;
       out_type    <= 8'd0;
