@@ -36,11 +36,13 @@ module prenc_core_harness #(
 
   localparam integer COUNT_WIDTH = 32;
   localparam integer ERROR_WIDTH = 16;
-  // Output bits, then the width of each fold stage (four bits to one).
+  // Output bits, then each fold stage's registers: four bits to one, the last LUT of a
+  // stage padded with at least one zero (one more register than needed when the bits
+  // divide by four; Yosys removes it as constant).
   localparam integer W0 = 5 * N + 4 + 7 + COUNT_WIDTH + 3 * ERROR_WIDTH;
-  localparam integer W1 = (W0 + 3) / 4;
-  localparam integer W2 = (W1 + 3) / 4;
-  localparam integer W3 = (W2 + 3) / 4;  // <= 4 for N <= 24
+  localparam integer W1 = W0 / 4 + 1;
+  localparam integer W2 = W1 / 4 + 1;
+  localparam integer W3 = W2 / 4 + 1;  // <= 4 for N <= 24
 
   wire [N-1:0]           pos_abs;
   wire [N+1:0]           pos_hyb;
@@ -93,44 +95,22 @@ module prenc_core_harness #(
                            track1_pos, track1_valid, track2_pos, track2_valid,
                            track1_errors, track2_errors, sync_errors};
 
-  // The stages, each padded with zeros to four bits per LUT.
-  wire [4*W1-1:0] stage0;
   reg  [W1-1:0]   stage1;
-  wire [4*W2-1:0] stage1_pad;
   reg  [W2-1:0]   stage2;
-  wire [4*W3-1:0] stage2_pad;
   reg  [W3-1:0]   stage3;
+  wire [4*W1-1:0] in1 = {{(4 * W1 - W0){1'b0}}, outputs};
+  wire [4*W2-1:0] in2 = {{(4 * W2 - W1){1'b0}}, stage1};
+  wire [4*W3-1:0] in3 = {{(4 * W3 - W2){1'b0}}, stage2};
   genvar g;
   generate
-    for (g = 0; g < 4 * W1; g = g + 1) begin : g_pad0
-      if (g < W0) begin : g_bit
-        assign stage0[g] = outputs[g];
-      end else begin : g_zero
-        assign stage0[g] = 1'b0;
-      end
-    end
-    for (g = 0; g < 4 * W2; g = g + 1) begin : g_pad1
-      if (g < W1) begin : g_bit
-        assign stage1_pad[g] = stage1[g];
-      end else begin : g_zero
-        assign stage1_pad[g] = 1'b0;
-      end
-    end
-    for (g = 0; g < 4 * W3; g = g + 1) begin : g_pad2
-      if (g < W2) begin : g_bit
-        assign stage2_pad[g] = stage2[g];
-      end else begin : g_zero
-        assign stage2_pad[g] = 1'b0;
-      end
-    end
     for (g = 0; g < W1; g = g + 1) begin : g_fold1
-      always @(posedge clk) stage1[g] <= ^stage0[4*g+3:4*g];
+      always @(posedge clk) stage1[g] <= ^in1[4*g+3:4*g];
     end
     for (g = 0; g < W2; g = g + 1) begin : g_fold2
-      always @(posedge clk) stage2[g] <= ^stage1_pad[4*g+3:4*g];
+      always @(posedge clk) stage2[g] <= ^in2[4*g+3:4*g];
     end
     for (g = 0; g < W3; g = g + 1) begin : g_fold3
-      always @(posedge clk) stage3[g] <= ^stage2_pad[4*g+3:4*g];
+      always @(posedge clk) stage3[g] <= ^in3[4*g+3:4*g];
     end
   endgenerate
 
