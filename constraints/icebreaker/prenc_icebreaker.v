@@ -2,7 +2,7 @@
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
 //   12 MHz (pin 35) -> SB_PLL40_PAD -> 24 MHz system clock: 3 Mbaud is 8 clocks per bit,
-//   1 Mbaud 24, 115200 baud 208 (0.2 % fast). The UP5K closes this top at about 29 MHz.
+//   1 Mbaud 24, 115200 baud 208 (0.2 % fast). The UP5K closes this top at about 31 MHz.
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
