@@ -59,7 +59,8 @@ module prenc_frame_rx #(
   localparam [31:0] MAX_LEN_32 = MAX_LEN;
   localparam [7:0]  MAX_LEN_8  = MAX_LEN_32[7:0];
   localparam [31:0] TIMEOUT_32 = TIMEOUT - 1;
-  localparam integer IW        = (TIMEOUT < 2) ? 1 : $clog2(TIMEOUT);  // idle, up to TIMEOUT - 1 in a frame
+  // idle counts up to TIMEOUT - 1 in a frame
+  localparam integer IW        = (TIMEOUT < 2) ? 1 : $clog2(TIMEOUT);
   localparam [IW-1:0] IDLE_LIMIT = TIMEOUT_32[IW-1:0];
 
   localparam [2:0] HUNT    = 3'd0;
