@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // prenc_core_harness: prenc_core with few pins, for place and route on small packages
-// (iCE40 UP5K SG48, 39 I/O; the core has 140 output bits at N = 10).
+// (iCE40 UP5K SG48, 39 I/O; the core has 141 output bits at N = 10).
 //
 // The core's inputs are pins. Every output bit is XORed, four to a LUT, into a register,
 // and those registers fold the same way, stage by stage, into one pin, so that nothing
