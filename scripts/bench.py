@@ -30,7 +30,8 @@
 7. Synthesis (scripts/synth.py, YoWASP Yosys + nextpnr): Fmax and utilization of the
    core alone on iCE40 HX8K, ECP5-25k and ECP5-85F, on the UP5K in prenc_core_harness
    (its 48-pin package has fewer pins than the core's ports; what the harness adds is
-   measured on the HX8K), and of each board top, at N = 10 and 16. The core alone is placed with issue 15's aims as constraints
+   measured on the HX8K), and of each board top, at N = 10 and 16. The core alone is
+   placed with issue 15's aims as constraints
    (120 MHz on iCE40, 150 MHz on ECP5) and timing allowed to fail, to read its Fmax;
    at N = 10 also with placer seeds 2 and 3 (the spread of Fmax is several per cent).
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
@@ -131,7 +132,7 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
     import synth
 
     rows = []
-    core_lc = {}  # N = 10, placer seed 1: the core alone and in its harness, on the HX8K
+    hx8k_lc = None  # the core alone on the HX8K, N = 10, placer seed 1
     for target, aim in (("ice40-hx8k", 120.0), ("ice40-up5k", 120.0), ("ecp5-25k", 150.0), ("ecp5-85k", 150.0)):
         for n in (10, 16):
             t = synth.TARGETS[target]
@@ -157,13 +158,14 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                                          for s in (2, 3)]
                     line += f"; seeds 1-3: {min(fmax):.1f} to {max(fmax):.1f} MHz"
                     if target == "ice40-hx8k":
-                        core_lc["core"] = r.used(t.logic)[0]
-                if top != "prenc_core" and "core" in core_lc:
+                        hx8k_lc = r.used(t.logic)[0]
+                if top != "prenc_core" and hx8k_lc is not None:
                     # What the harness adds: the same harness on the HX8K against the core alone.
                     h = synth.core_build("ice40-hx8k", n, aim, out.with_name(f"{out.name}-hx8k"),
                                          require_timing=False, top=top)
-                    line += (f"; the harness adds {h.used(t.logic)[0] - core_lc['core']} LC "
-                             f"(on the HX8K: {h.used(t.logic)[0]} in it, {core_lc['core']} alone)")
+                    in_harness = h.used(synth.TARGETS["ice40-hx8k"].logic)[0]
+                    line += (f"; the harness adds {in_harness - hx8k_lc} LC "
+                             f"(on the HX8K: {in_harness} in it, {hx8k_lc} alone)")
                 rows.append((what, n, line))
             except synth.FlowError as err:
                 rows.append((what, n, f"FAILED: {err}"))
