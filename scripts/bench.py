@@ -33,7 +33,8 @@
    measured on the HX8K), and of each board top, at N = 10 and 16. The core alone is
    placed with issue 15's aims as constraints
    (120 MHz on iCE40, 150 MHz on ECP5) and timing allowed to fail, to read its Fmax;
-   at N = 10 also with placer seeds 2 and 3 (the spread of Fmax is several per cent).
+   at N = 10 also with placer seeds 2 and 3 (the spread of Fmax is several per cent);
+   and the core with HYPOTHESES = 0 (no hypotheses after a missed state), what they cost.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios); the
    time to rebuild Table 1 to n = 10 (20 s of exact search per open entry); the RTL
@@ -169,6 +170,15 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 rows.append((what, n, line))
             except synth.FlowError as err:
                 rows.append((what, n, f"FAILED: {err}"))
+    # The core without the two hypotheses of a missed state (HYPOTHESES = 0): what they cost.
+    for target, aim in (("ice40-hx8k", 120.0), ("ecp5-25k", 150.0)):
+        out = SIM_BUILD / "bench" / "synth" / f"core-{target}-n10-hypotheses0"
+        what = f"core alone, HYPOTHESES = 0, {synth.TARGETS[target].name}"
+        try:
+            r = synth.core_build(target, 10, aim, out, require_timing=False, parameters={"HYPOTHESES": 0})
+            rows.append((what, 10, _synth_line(synth, r)))
+        except synth.FlowError as err:
+            rows.append((what, 10, f"FAILED: {err}"))
     # prenc_wb at the boards' design clocks (the UP5K through the few-pin harness).
     for target, top, aim in (("ice40-up5k", "prenc_wb_harness", 24.0), ("ecp5-25k", "prenc_wb", 50.0)):
         out = SIM_BUILD / "bench" / "synth" / f"{top}-{target}-n10"

@@ -6,6 +6,7 @@
     python scripts/synth.py --board ulx3s
     python scripts/synth.py --core ice40-hx8k --bits 16      # the core alone, no bitstream
     python scripts/synth.py --core ice40-up5k --top prenc_core_harness   # few pins: the UP5K
+    python scripts/synth.py --core ice40-hx8k --param HYPOTHESES=0       # another parameter
 
 Steps, every tool from PyPI (YoWASP builds, installed by the Makefile):
 
@@ -149,7 +150,7 @@ def _run(step: str, cmd: list[str], log: Path) -> str:
     text = proc.stdout + proc.stderr
     log.write_text(text)
     if proc.returncode != 0:
-        errors = [l for l in text.splitlines() if l.startswith("ERROR")]
+        errors = [l for l in text.splitlines() if "ERROR" in l]  # also "file:line: ERROR: ..."
         raise FlowError(f"{step} failed: {errors[0].strip() if errors else 'exit ' + str(proc.returncode)} "
                         f"(log: {rel(log)})")
     return text
@@ -291,11 +292,11 @@ def taps_mask(taps: tuple[int, ...]) -> int:
 
 
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
-               top: str = "prenc_core", seed: int = 1) -> Result:
+               top: str = "prenc_core", seed: int = 1, parameters: dict[str, int] | None = None) -> Result:
     """The reader core alone (or in its few-pin harness, or prenc_wb, the core on Wishbone), placed
-    and routed."""
+    and routed; `parameters` sets more of the top's parameters (e.g. {"HYPOTHESES": 0})."""
     rom = rom_for(bits, out)
-    params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
+    params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom, **(parameters or {})}
     return build(top, file_list(list_file(top)), target, params, freq_mhz, out, bitstream=False,
                  require_timing=require_timing, seed=seed)
 
@@ -337,8 +338,20 @@ def main(argv: list[str] | None = None) -> int:
                         help="with --core: the core alone, the core with its outputs folded into one pin "
                              "(prenc_core_harness, for the UP5K), on its Wishbone bus (prenc_wb), or that with "
                              "an LFSR for bus master and one pin out (prenc_wb_harness, for the UP5K)")
+    parser.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
+                        help="with --core: set another integer parameter of the top (e.g. HYPOTHESES=0)")
     parser.add_argument("--out", type=Path, help="output folder (default build/synth/<board or core>)")
     args = parser.parse_args(argv)
+    extra: dict[str, int] = {}
+    for item in args.param:
+        name, _, value = item.partition("=")
+        if not re.fullmatch(r"[A-Z][A-Z0-9_]*", name) or not re.fullmatch(r"-?\d+", value):
+            parser.error(f"--param {item!r}: give NAME=INTEGER, e.g. HYPOTHESES=0")
+        if name in ("N", "TAPS", "ROM_FILE"):
+            parser.error(f"--param {name}: set by --bits and the ROM it writes")
+        extra[name] = int(value)
+    if extra and not args.core:
+        parser.error("--param goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
     out = args.out or REPO / "build" / "synth" / f"{name}-n{args.bits}"
     if out.exists():
@@ -348,7 +361,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.board:
             result = board_build(BOARDS[args.board], args.bits, out, args.baud)
         else:
-            result = core_build(args.core, args.bits, args.freq, out, top=args.top)
+            result = core_build(args.core, args.bits, args.freq, out, top=args.top, parameters=extra)
     except (FlowError, ValueError) as err:
         print(f"synth: error: {err}", file=sys.stderr)
         return 1

@@ -36,6 +36,9 @@
 //                its last 4N checks (3)
 //   DUAL_VOTES   votes that decide between the two hypotheses of a missed state (3)
 //   DUAL_SPAN    slots of travel the decision may take before the offset drops (12)
+//   HYPOTHESES   1: a missed quadrature state opens the two hypotheses; 0: it drops the
+//                position until the next lock, with no landing reading: about a fifth
+//                less logic, for sync tracks that never miss a state (default 1)
 //   SCORE_UP, SCORE_LIMIT   a track's health score: + SCORE_UP per mismatch, - 1 per
 //                match, unsupported at SCORE_LIMIT (defaults 4, 12)
 //
@@ -75,6 +78,7 @@ module prenc_core #(
   parameter integer LOCK_EXTRA  = 3,
   parameter integer DUAL_VOTES  = 3,
   parameter integer DUAL_SPAN   = 12,
+  parameter integer HYPOTHESES  = 1,
   parameter integer SCORE_UP    = 4,
   parameter integer SCORE_LIMIT = 12
 ) (
@@ -154,7 +158,7 @@ module prenc_core #(
   wire strobe_head2;
 
   prenc_sampler #(
-    .JUMP (1)
+    .JUMP (HYPOTHESES)  // the landing reading serves the hypotheses' votes
   ) u_sampler (
     .clk          (clk),
     .rst          (rst),
@@ -381,7 +385,8 @@ module prenc_core #(
     .LOCK_ONE   (LOCK_ONE),
     .LOCK_EXTRA (LOCK_EXTRA),
     .DUAL_VOTES (DUAL_VOTES),
-    .DUAL_SPAN  (DUAL_SPAN)
+    .DUAL_SPAN  (DUAL_SPAN),
+    .HYPOTHESES (HYPOTHESES)
   ) u_mode_fsm (
     .clk          (clk),
     .rst          (rst),

@@ -42,6 +42,9 @@
 //   LOCK_EXTRA   slots more per track when a head is not quiet, 0..16 (default 3)
 //   DUAL_VOTES   votes that decide between two hypotheses, 2..7
 //   DUAL_SPAN    slots of travel a decision may take, 1..2^(N-1)-1 and <= 63
+//   HYPOTHESES   1: an illegal transition opens the two hypotheses (above); 0: it drops a
+//                held offset at once, and the hypothesis logic is left out (about a fifth
+//                of the core: for a sync track that never misses a state)
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -52,7 +55,8 @@ module prenc_mode_fsm #(
   parameter integer LOCK_ONE   = (N < 8) ? N + 5 : N + 2,
   parameter integer LOCK_EXTRA = 3,
   parameter integer DUAL_VOTES = 3,
-  parameter integer DUAL_SPAN  = 12
+  parameter integer DUAL_SPAN  = 12,
+  parameter integer HYPOTHESES = 1
 ) (
   input  wire         clk,
   input  wire         rst,
@@ -115,6 +119,10 @@ module prenc_mode_fsm #(
         (N < 8 && DUAL_SPAN >= (1 << (N - 1)))) begin : g_bad_dual_span
       initial $display("ERROR: %m: parameter DUAL_SPAN = %0d: need 1..63 and < 2^(N-1)", DUAL_SPAN);
       prenc_mode_fsm_parameter_DUAL_SPAN_out_of_range u_stop ();
+    end
+    if (HYPOTHESES != 0 && HYPOTHESES != 1) begin : g_bad_hypotheses
+      initial $display("ERROR: %m: parameter HYPOTHESES = %0d must be 0 or 1", HYPOTHESES);
+      prenc_mode_fsm_parameter_HYPOTHESES_must_be_0_or_1 u_stop ();
     end
   endgenerate
 
@@ -243,7 +251,8 @@ module prenc_mode_fsm #(
   end
   // Fresh (outside the slots visited since the transition), also one clock ahead:
   // against the interval as this clock's event leaves it.
-  wire enter  = illegal & valid_now & ~dual_reg & (sup == 2'b11);
+  // (HYPOTHESES = 0: never, and dual_reg is constant 0: synthesis drops what follows it.)
+  wire enter  = (HYPOTHESES == 1) & illegal & valid_now & ~dual_reg & (sup == 2'b11);
   // The four comparisons kept as nets, each its own carry chain (merged, ABC made
   // them ten LUT levels deep).
   (* keep *) wire widen;
@@ -380,7 +389,7 @@ module prenc_mode_fsm #(
                            (support_now == 2'b10) ? REDUCED_2 : INCREMENTAL;
   // Two hypotheses stay open (or open now) while both tracks support the offset.
   wire       dual_keep   = (illegal & enter) | (dual_reg & ~won);
-  wire       dual_next   = dual_keep & ~drop & (sup == 2'b11);
+  wire       dual_next   = (HYPOTHESES == 1) & dual_keep & ~drop & (sup == 2'b11);
   // (A lock needs no offset held, resume one held: never both.)
   wire       resume      = ~drop & ~dual_keep & (valid_now | won);
   wire [2:0] mode_held   = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
@@ -611,7 +620,7 @@ module prenc_mode_fsm #(
       // tracks supporting it opens two hypotheses, otherwise the offset is dropped.
       if (f_illegal_prev) assert (!pos_valid);
       if (f_illegal_prev && f_valid_prev) begin
-        if (f_sup_prev == 2'b11) assert (dual && offset == f_offset_prev);
+        if (f_sup_prev == 2'b11 && HYPOTHESES == 1) assert (dual && offset == f_offset_prev);
         else assert (!dual && mode == INCREMENTAL && flush == 2'b11);
       end
       // pos_valid rises only on the documented evidence.

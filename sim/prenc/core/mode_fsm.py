@@ -29,6 +29,7 @@ comparisons, and each illegal quadrature transition:
   illegal transition or DUAL_SPAN slots of travel without a decision drop the
   offset. With one track supporting, an illegal transition drops it at once (a
   lone head that may be the one failing cannot choose between hypotheses).
+  With `hypotheses` off (HYPOTHESES = 0) every illegal transition drops a held offset.
 """
 
 from __future__ import annotations
@@ -90,6 +91,7 @@ class ModeFsm:
     lock_extra: int = LOCK_EXTRA
     dual_votes: int = DUAL_VOTES
     dual_span: int = DUAL_SPAN
+    hypotheses: bool = True
     mode: Mode = Mode.ACQUIRE
     offset: int = 0
     dual: int = 0
@@ -125,7 +127,7 @@ class ModeFsm:
         locked_now = False
         drop = False
         if j.illegal:
-            if mode in VALID_MODES and not dual and sup[0] and sup[1]:
+            if self.hypotheses and mode in VALID_MODES and not dual and sup[0] and sup[1]:
                 dual, dual_cw, mode = 1, j.illegal_cw, Mode.INCREMENTAL
                 anchor, lo, hi, votes, voted = j.slot, 1, 0, [0, 0], [0, 0, 0, 0]
             elif locked:

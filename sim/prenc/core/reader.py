@@ -65,16 +65,17 @@ class ReaderOutput:
 class Reader:
     def __init__(self, code: Code, filter_len: int = 0, lock_both: int | None = None,
                  lock_one: int | None = None, dual_votes: int = DUAL_VOTES,
-                 dual_span: int = DUAL_SPAN, score_up: int = SCORE_UP, score_limit: int = SCORE_LIMIT):
+                 dual_span: int = DUAL_SPAN, score_up: int = SCORE_UP, score_limit: int = SCORE_LIMIT,
+                 hypotheses: bool = True):
         self.code = code
         self.n = code.n
         self.mask = code.mask
         self.conditioner = InputConditioner(4, filter_len)
         self.quadrature = QuadratureDecoder()
-        self.sampler = Sampler(jump=True)
+        self.sampler = Sampler(jump=hypotheses)  # the landing reading serves the hypotheses
         self.position = Position(code.n)
         self.fsm = ModeFsm(code.n, lock_both=lock_both, lock_one=lock_one, dual_votes=dual_votes,
-                           dual_span=dual_span)
+                           dual_span=dual_span, hypotheses=hypotheses)
         ext_max = max(self.fsm.lock_one, self.fsm.lock_both) - 1 + self.fsm.lock_extra
         self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max),
                        TrackWord(code, code.n - 1, score_up, score_limit, ext_max)]
