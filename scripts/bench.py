@@ -15,13 +15,15 @@
    ideal is one state per clock.
 4. Fault campaign of the reference reader (prenc.virtual.campaign): 10^6 strobes each at
    N = 6 and N = 10, seeded, every fault of the datasheet in random mixes; wrong
-   valid positions must be zero.
+   valid positions must be zero. Then the lean-rule design study and the core on the
+   same first 2 x 10^5 strobes at N = 10.
 4b. The core's goals (prenc.virtual.goals, issue 15's table): per scenario at N = 10, the
    share of clocks valid and the slots of travel to the first valid position of the
    core (its clock-level model, which the RTL equals clock for clock in
    tb/core/prenc_core) beside the plain verifying reader (prenc.virtual.plain_reader: drop
    everything on any disagreement, re-verify N + 1 strobes), at FILTER 0 and 3,
-   with the wrong valid clocks of each.
+   with the wrong valid clocks of each; and beside them the lean-rule design study
+   (prenc.virtual.lean_reader: what a cheaper evidence rule gives up; no RTL).
 5. Fault campaign of the RTL core (tb/core/prenc_core/bench_prenc_core.py on Verilator):
    at least 10^5 strobes at N = 10, judged against the true angle clock by clock.
 6. Host link update rate: answers per second of board time when streaming back to
@@ -296,6 +298,15 @@ def main() -> int:
         faults = ", ".join(f"{k} {v}" for k, v in r.faults.items())
         print(f"   {n:>3} {r.strobes:>9,} {r.events:>9,} {r.segments:>8} {r.wrong_valid:>11} "
               f"{r.availability:>11.1%} {time.perf_counter() - t0:>6.0f}s  {faults}")
+    # The lean-rule design study on the same segments (the first 2 x 10^5 strobes at N = 10).
+    from prenc.virtual.lean_reader import LeanReader
+    t0 = time.perf_counter()
+    lean = campaign(10, 200_000, 20_000, seed=1, reader_type=LeanReader)
+    core = campaign(10, 200_000, 20_000, seed=1)
+    failed |= lean.wrong_valid != 0
+    print(f"   lean-rule study, N = 10, the same first {lean.strobes:,} strobes: {lean.wrong_valid} wrong valid, "
+          f"availability {lean.availability:.1%} (the core {core.availability:.1%}), "
+          f"{time.perf_counter() - t0:.0f}s")
 
     failed |= goals_section()
 
@@ -328,24 +339,27 @@ def main() -> int:
 
 def goals_section() -> bool:
     from prenc.virtual.goals import goals, measure
+    from prenc.virtual.lean_reader import LeanReader
     from prenc.virtual.plain_reader import PlainReader
     from prenc.core.reader import Reader
 
     n, failed = 10, False
     print("\n4b. The core's goals (N = 10): share of clocks valid / slots to the first valid position")
     print(f"   {'scenario':<27} {'F':>2} {'core':>15} {'plain reader':>15} {'core / plain':>12} {'goal':>12} "
-          f"{'wrong':>9}")
+          f"{'wrong':>9} {'lean study':>15}")
     for filter_len in (0, 3):
         for g in goals(n):
             enc = g.run(n)
             a = measure(g, Reader(Code(n), filter_len), n, filter_len, enc)
             b = measure(g, PlainReader(Code(n), filter_len), n, filter_len, enc)
-            failed |= a.wrong != 0
+            c = measure(g, LeanReader(Code(n), filter_len), n, filter_len, enc)
+            failed |= a.wrong != 0 or c.wrong != 0
             fv = lambda m: "never" if m.first_valid is None else f"{m.first_valid:.1f}"
             ratio = f"{a.availability / b.availability:.2f}x" if b.availability else "inf"
             goal = f">={g.availability:.2f}" + (f" <={g.first_valid}" if g.first_valid else "")
             print(f"   {g.name:<27} {filter_len:>2} {a.availability:>7.3f} {fv(a):>7} {b.availability:>7.3f} "
-                  f"{fv(b):>7} {ratio:>12} {goal:>12} {a.wrong:>4}/{b.wrong:<4}"
+                  f"{fv(b):>7} {ratio:>12} {goal:>12} {a.wrong:>4}/{b.wrong:<4} "
+                  f"{c.availability:>7.3f} {fv(c):>7} ({c.wrong} wrong{'' if c.meets(g) else ', short'})"
                   + ("" if a.meets(g) else "  short of goal"))
     return failed
 

@@ -50,11 +50,12 @@ class CampaignResult:
         return self.valid_events / max(1, self.events)
 
 
-def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: CampaignResult) -> None:
+def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: CampaignResult,
+                reader_type=Reader) -> None:
     n, length = code.n, code.length
     seq = code.sequence.astype(np.int64)
     h = int(rng.integers(0, 4 * length))  # true hybrid position
-    reader = Reader(code)
+    reader = reader_type(code)
     last_cw = 1
     truth: deque = deque([None] * DECISION_DELAY, maxlen=DECISION_DELAY + 1)
     # Fault mix of this segment.
@@ -133,10 +134,11 @@ def run_segment(code: Code, rng: np.random.Generator, strobes: int, result: Camp
     result.segments += 1
 
 
-def campaign(n: int = 10, strobes: int = 1_000_000, segment_strobes: int = 20_000, seed: int = 1) -> CampaignResult:
+def campaign(n: int = 10, strobes: int = 1_000_000, segment_strobes: int = 20_000, seed: int = 1,
+             reader_type=Reader) -> CampaignResult:
     code = Code(n)
     rng = np.random.default_rng(seed)
     result = CampaignResult(n, seed)
     while result.strobes < strobes:
-        run_segment(code, rng, min(segment_strobes, strobes - result.strobes), result)
+        run_segment(code, rng, min(segment_strobes, strobes - result.strobes), result, reader_type)
     return result
