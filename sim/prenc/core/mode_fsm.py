@@ -82,6 +82,16 @@ class JudgeInput:
     mismatch_lo: tuple = (0, 0)
     mismatch_hi: tuple = (0, 0)
 
+    @classmethod
+    def of_tracks(cls, tracks, off: tuple, illegal: int, illegal_cw: int, slot: int) -> "JudgeInput":
+        """The J1 registers from both tracks' registered outputs and their offsets."""
+        return cls(strobe=tracks[0].strobe, illegal=illegal, illegal_cw=illegal_cw, slot=slot,
+                   full=tuple(t.full for t in tracks), off=tuple(off), span=tuple(t.span for t in tracks),
+                   settled=tuple(t.settled for t in tracks), quiet=tuple(t.is_quiet for t in tracks),
+                   checked=tuple(t.checked for t in tracks), mismatch=tuple(t.mismatch for t in tracks),
+                   mismatch_lo=tuple(t.mismatch_lo for t in tracks),
+                   mismatch_hi=tuple(t.mismatch_hi for t in tracks))
+
 
 @dataclass
 class ModeFsm:

@@ -93,14 +93,9 @@ class Reader:
         """Everything after the quadrature decoder, for one rising edge."""
         tracks, pos, s = self.tracks, self.position, self.sampler.out
         self.fsm.clock(self.j1, tuple(t.supported for t in tracks), tuple(t.law for t in tracks), rst=rst)
-        self.j1 = JudgeInput(
-            strobe=tracks[0].strobe, illegal=self.t_illegal, illegal_cw=self.t_illegal_cw,
-            slot=(tracks[0].base + tracks[0].index) & self.mask,
-            full=tuple(t.full for t in tracks), span=tuple(t.span for t in tracks),
-            settled=tuple(t.settled for t in tracks), quiet=tuple(t.is_quiet for t in tracks),
-            off=tuple((self.code.position(t.word) - t.base) & self.mask for t in tracks),
-            checked=tuple(t.checked for t in tracks), mismatch=tuple(t.mismatch for t in tracks),
-            mismatch_lo=tuple(t.mismatch_lo for t in tracks), mismatch_hi=tuple(t.mismatch_hi for t in tracks))
+        self.j1 = JudgeInput.of_tracks(
+            tracks, [(self.code.position(t.word) - t.base) & self.mask for t in tracks],
+            self.t_illegal, self.t_illegal_cw, (tracks[0].base + tracks[0].index) & self.mask)
         if rst:
             self.j1 = JudgeInput()
         flush, law_on, realign, dual, dual_cw = self._ctrl

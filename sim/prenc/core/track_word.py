@@ -46,6 +46,22 @@ def default_quiet(n: int) -> int:
     return min(4 * n, 63)
 
 
+def health_after_check(t, dual: int, dual_cw: int) -> tuple[int, int]:
+    """A head's score and quiet count after its last clock's check (the registered
+    checked / mismatch / raw_checked / raw_changed of track `t`): law mode, unless the
+    two hypotheses of a missed state predict different bits there, or raw mode (never
+    both). A disagreement adds score_up (up to score_limit) and zeroes the quiet count;
+    an agreement takes one off the score and counts towards quiet."""
+    score, quiet = t.score, t.quiet
+    alt = t.mismatch_lo if dual_cw else t.mismatch_hi
+    scored = (t.checked and not (dual and t.mismatch != alt)) or t.raw_checked
+    disagreed = t.mismatch if t.checked else t.raw_changed
+    if scored:
+        score = min(score + t.score_up, t.score_limit) if disagreed else max(score - 1, 0)
+        quiet = 0 if disagreed else min(quiet + 1, t.quiet_max)
+    return score, quiet
+
+
 @dataclass
 class TrackEvent:
     """One clock's input: at most one of strobe, up, down; illegal may come with up/down."""
@@ -126,17 +142,7 @@ class TrackWord:
             ev = TrackEvent(up=int(pending > 0), down=int(pending < 0), illegal=ev.illegal)
             pending = 0
         pending = pending or realign
-        # Health from last clock's comparison (registered mismatch).
-        score = self.score
-        alt = self.mismatch_lo if dual_cw else self.mismatch_hi
-        quiet = self.quiet
-        # Last clock's check: law mode (unless the hypotheses of a missed state differ
-        # there) or raw mode (a read or predicted bit read again); never both.
-        scored = (self.checked and not (dual and self.mismatch != alt)) or self.raw_checked
-        disagreed = self.mismatch if self.checked else self.raw_changed
-        if scored:
-            score = min(score + self.score_up, self.score_limit) if disagreed else max(score - 1, 0)
-            quiet = 0 if disagreed else min(quiet + 1, self.quiet_max)
+        score, quiet = health_after_check(self, dual, dual_cw)
         demote = law and self.score >= self.score_limit  # from the register: a clock after the limit
         errors = self.errors
         if self.checked and self.mismatch and errors < error_max:

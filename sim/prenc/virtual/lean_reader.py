@@ -43,7 +43,7 @@ from ..core.position import Position
 from ..core.quadrature import QuadratureDecoder
 from ..core.reader import ReaderOutput
 from ..core.sampler import Sampler
-from ..core.track_word import SCORE_LIMIT, SCORE_UP, default_quiet
+from ..core.track_word import SCORE_LIMIT, SCORE_UP, default_quiet, health_after_check
 from .encoder import EncoderRun
 
 
@@ -96,14 +96,7 @@ class LeanTrack:
     def clock(self, strobe: int, cw: int, moved: int, head: int, slot: int, illegal: int, offset: int,
               flush: int = 0, law_on: int = 0, dual: int = 0, dual_cw: int = 0, rst: int = 0) -> None:
         n = self.n
-        # Health from last clock's check, as the core's track word scores it.
-        alt = self.mismatch_lo if dual_cw else self.mismatch_hi
-        scored = (self.checked and not (dual and self.mismatch != alt)) or self.raw_checked
-        disagreed = self.mismatch if self.checked else self.raw_changed
-        score, quiet = self.score, self.quiet
-        if scored:
-            score = min(score + self.score_up, self.score_limit) if disagreed else max(score - 1, 0)
-            quiet = 0 if disagreed else min(quiet + 1, self.quiet_max)
+        score, quiet = health_after_check(self, dual, dual_cw)  # as the core's track word
         demote = self.law and self.score >= self.score_limit
         law = self.law
         checked = mismatch = mismatch_lo = mismatch_hi = raw_checked = raw_changed = 0
@@ -180,13 +173,8 @@ class LeanReader:
         flush, law_on, dual, dual_cw, offset = list(f.flush), list(f.law_on), f.dual, f.dual_cw, f.offset
         tracks, pos, s = self.tracks, self.position, self.sampler.out
         f.clock(self.j1, tuple(t.supported for t in tracks), tuple(t.law for t in tracks), rst=rst)
-        self.j1 = JudgeInput(
-            strobe=tracks[0].strobe, illegal=self.t_illegal, illegal_cw=self.t_illegal_cw, slot=self.t_slot,
-            full=tuple(t.full for t in tracks), span=tuple(t.span for t in tracks),
-            settled=tuple(t.settled for t in tracks), quiet=tuple(t.is_quiet for t in tracks),
-            off=tuple(t.off for t in tracks), checked=tuple(t.checked for t in tracks),
-            mismatch=tuple(t.mismatch for t in tracks), mismatch_lo=tuple(t.mismatch_lo for t in tracks),
-            mismatch_hi=tuple(t.mismatch_hi for t in tracks))
+        self.j1 = JudgeInput.of_tracks(tracks, [t.off for t in tracks], self.t_illegal, self.t_illegal_cw,
+                                       self.t_slot)
         if rst:
             self.j1 = JudgeInput()
         for h, t in enumerate(tracks):
