@@ -37,14 +37,10 @@ from __future__ import annotations
 from typing import Sequence
 
 from ..codes.debruijn import Code
-from ..core.input_conditioner import InputConditioner
-from ..core.mode_fsm import JudgeInput, ModeFsm
-from ..core.position import Position
-from ..core.quadrature import QuadratureDecoder
-from ..core.reader import ReaderOutput
-from ..core.sampler import Sampler
+from ..core.mode_fsm import JudgeInput
+from ..core.quadrature import QuadratureOutput
+from ..core.reader import Reader
 from ..core.track_word import SCORE_LIMIT, SCORE_UP, default_quiet, health_after_check
-from .encoder import EncoderRun
 
 
 class LeanTrack:
@@ -145,33 +141,20 @@ class LeanTrack:
         self.raw_checked, self.raw_changed = raw_checked, raw_changed
 
 
-class LeanReader:
-    """Reader's front end and judge with two LeanTracks (clock and clock_decoded as Reader)."""
+class LeanReader(Reader):
+    """The core's model (prenc.core.reader.Reader: front end, judge, outputs) with two
+    LeanTracks in place of its track words."""
 
     def __init__(self, code: Code, filter_len: int = 0, hypotheses: bool = True):
-        self.code, self.n, self.mask = code, code.n, code.mask
-        self.conditioner = InputConditioner(4, filter_len)
-        self.quadrature = QuadratureDecoder()
-        self.sampler = Sampler(jump=hypotheses)
-        self.position = Position(code.n)
-        self.fsm = ModeFsm(code.n, hypotheses=hypotheses)
+        super().__init__(code, filter_len, hypotheses=hypotheses)
         ext_max = max(self.fsm.lock_one, self.fsm.lock_both) - 1 + self.fsm.lock_extra
         self.tracks = [LeanTrack(code, 0, ext_max), LeanTrack(code, code.n - 1, ext_max)]
-        self.j1 = JudgeInput()
-        self.t_illegal = self.t_illegal_cw = 0
         self.t_slot = 0
-        self.clean = [0, 0, 0, 1]
-        self.strobes = 0
 
-    def output(self) -> ReaderOutput:
-        pos = (self.position.slot_d[-1] + self.fsm.offset) & self.mask
-        return ReaderOutput(int(self.fsm.valid), pos, 4 * pos + self.position.quarter_d[-1],
-                            int(self.fsm.mode), self.fsm.dual)
-
-    def _core(self, quad, heads: Sequence[int], rst: int) -> None:
-        f = self.fsm
-        flush, law_on, dual, dual_cw, offset = list(f.flush), list(f.law_on), f.dual, f.dual_cw, f.offset
-        tracks, pos, s = self.tracks, self.position, self.sampler.out
+    def _core(self, quad_before: QuadratureOutput, heads_before: Sequence[int], rst: int) -> None:
+        f, tracks, pos, s = self.fsm, self.tracks, self.position, self.sampler.out
+        flush, law_on, _, dual, dual_cw = self._ctrl
+        offset = f.offset  # the judge's offset as the tracks see it on this edge
         f.clock(self.j1, tuple(t.supported for t in tracks), tuple(t.law for t in tracks), rst=rst)
         self.j1 = JudgeInput.of_tracks(tracks, [t.off for t in tracks], self.t_illegal, self.t_illegal_cw,
                                        self.t_slot)
@@ -183,24 +166,6 @@ class LeanReader:
         self.t_illegal, self.t_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
         self.t_slot = pos.slot
         self.strobes += s.strobe and not rst
-        pos.clock(quad, rst=rst)
-        self.sampler.clock(heads[0], heads[1], quad.step, quad.step_cw, quad.quarter,
-                           break_in=quad.illegal, rst=rst)
-
-    def clock(self, raw: Sequence[int], rst: int = 0) -> ReaderOutput:
-        quad = self.quadrature.output()
-        clean = self.clean
-        self._core(quad, clean, rst)
-        self.quadrature.clock(clean[2], clean[3], rst=rst)
-        self.clean = self.conditioner.clock(list(raw), rst=rst)
-        return self.output()
-
-    def clock_decoded(self, quad, head1: int, head2: int, rst: int = 0) -> ReaderOutput:
-        """One edge with `quad` as the decoder's registers (the fault campaign's entry)."""
-        self.sampler.head1_d, self.sampler.head2_d = head1, head2
-        self._core(quad, (head1, head2), rst)
-        return self.output()
-
-    def run(self, enc: EncoderRun, reset_clocks: int = 4) -> list[ReaderOutput]:
-        rows = enc.rows()
-        return [self.clock(list(r), rst=int(k < reset_clocks)) for k, r in enumerate(rows)]
+        pos.clock(quad_before, rst=rst)
+        self.sampler.clock(heads_before[0], heads_before[1], quad_before.step, quad_before.step_cw,
+                           quad_before.quarter, break_in=quad_before.illegal, rst=rst)
