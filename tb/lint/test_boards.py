@@ -82,3 +82,27 @@ def test_a_clock_that_is_not_met_fails_the_build():
     with pytest.raises(synth.FlowError, match="timing failed: clock .* needs 400.0 MHz"):
         synth.build("prenc_ssi", synth.file_list(synth.RTL / "board" / "prenc_ssi.f"), "ice40-hx8k",
                     {"WIDTH": 32}, 400.0, out, bitstream=False)
+
+
+def test_the_core_without_hypotheses_leaves_their_logic_out():
+    """HYPOTHESES = 0 (no hypotheses after a missed quadrature state) is for boards that
+    need a smaller core: synthesis must drop the hypothesis logic (about a fifth of the
+    core's LUTs and of its flip-flops: docs/architecture.md, "What the logic pays for")."""
+    def ffs_luts(extra):
+        cells = synthesize("prenc_core", "ice40", {"ROM_FILE": rom_file(10), **extra}).cells
+        return sum(n for c, n in cells.items() if c.startswith("SB_DFF")), cells.get("SB_LUT4", 0)
+
+    ff, lut = ffs_luts({})
+    ff0, lut0 = ffs_luts({"HYPOTHESES": 0})
+    assert lut0 < 0.85 * lut, (lut, lut0)
+    assert ff0 < ff - 40, (ff, ff0)
+
+
+@pytest.mark.parametrize("argv", [["--core", "ice40-hx8k", "--param", "HYPOTHESES"],
+                                  ["--core", "ice40-hx8k", "--param", "N=12"],
+                                  ["--board", "icebreaker", "--param", "HYPOTHESES=0"]])
+def test_synth_rejects_a_malformed_parameter(argv, capsys):
+    with pytest.raises(SystemExit) as stop:
+        synth.main(argv)
+    assert stop.value.code == 2
+    assert "--param" in capsys.readouterr().err
