@@ -251,8 +251,16 @@ module prenc_mode_fsm #(
   end
   // Fresh (outside the slots visited since the transition), also one clock ahead:
   // against the interval as this clock's event leaves it.
-  // (HYPOTHESES = 0: never, and dual_reg is constant 0: synthesis drops what follows it.)
-  wire enter  = (HYPOTHESES == 1) & illegal & valid_now & ~dual_reg & (sup == 2'b11);
+  // An illegal transition that opens the two hypotheses (HYPOTHESES = 0: none, and
+  // dual_reg stays 0, so synthesis drops all that follows from it).
+  wire enter;
+  generate
+    if (HYPOTHESES == 1) begin : g_enter
+      assign enter = illegal & valid_now & ~dual_reg & (sup == 2'b11);
+    end else begin : g_no_enter
+      assign enter = 1'b0;
+    end
+  endgenerate
   // The four comparisons kept as nets, each its own carry chain (merged, ABC made
   // them ten LUT levels deep).
   (* keep *) wire widen;
@@ -389,7 +397,14 @@ module prenc_mode_fsm #(
                            (support_now == 2'b10) ? REDUCED_2 : INCREMENTAL;
   // Two hypotheses stay open (or open now) while both tracks support the offset.
   wire       dual_keep   = (illegal & enter) | (dual_reg & ~won);
-  wire       dual_next   = (HYPOTHESES == 1) & dual_keep & ~drop & (sup == 2'b11);
+  wire       dual_next;
+  generate
+    if (HYPOTHESES == 1) begin : g_dual_next
+      assign dual_next = dual_keep & ~drop & (sup == 2'b11);
+    end else begin : g_no_dual_next
+      assign dual_next = 1'b0;
+    end
+  endgenerate
   // (A lock needs no offset held, resume one held: never both.)
   wire       resume      = ~drop & ~dual_keep & (valid_now | won);
   wire [2:0] mode_held   = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
