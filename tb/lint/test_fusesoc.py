@@ -162,6 +162,34 @@ targets:
     assert not list((library / "build" / "bad").rglob("prenc_rom_n40.hex"))
 
 
+def test_the_cores_parameters_reach_the_toplevel(library):
+    """Every tunable of prenc_core's header can be set from the command line (the
+    .core lists them in its targets), and reaches Verilator as -G."""
+    header = (REPO / "rtl" / "core" / "prenc_core.v").read_text()
+    tunables = [name for name in re.findall(r"^\s+parameter\s+(?:integer\s+)?(?:\[[^]]*\]\s*)?(\w+)\s*=",
+                                            header, re.M)
+                if name not in ("N", "TAPS", "SHIFT", "ROM_FILE")]  # the generator's, and SHIFT's fixed
+    assert "HYPOTHESES" in tunables and "FILTER" in tunables and len(tunables) == 11, tunables
+    fusesoc(library, "run", "--build-root", "build/params", "--target", "lint", "prenc:reader:core",
+            "--FILTER=3", "--HYPOTHESES=0", "--SCORE_LIMIT=16", "--COUNT_WIDTH=24")
+    options = (library / "build" / "params" / "prenc_reader_core_0.1.0" / "lint-verilator"
+               / "prenc_reader_core_0.1.0.vc").read_text()
+    for setting in ("-GFILTER=3", "-GHYPOTHESES=0", "-GSCORE_LIMIT=16", "-GCOUNT_WIDTH=24", "-GN=10"):
+        assert setting in options, options
+    help_text = fusesoc(library, "run", "--target", "lint", "prenc:reader:core", "--help").stdout
+    for name in tunables:
+        assert f"--{name}" in help_text, f"{name} is not settable: {help_text[-2000:]}"
+    bus_help = fusesoc(library, "run", "--target", "synth_ice40", "prenc:reader:bus", "--help").stdout
+    assert "--FILTER" in bus_help, bus_help[-2000:]
+
+
+def test_an_illegal_parameter_stops_the_build_naming_it(library):
+    proc = fusesoc(library, "run", "--build-root", "build/badparam", "--target", "lint", "prenc:reader:core",
+                   "--HYPOTHESES=2", check=False)
+    assert proc.returncode != 0
+    assert "HYPOTHESES" in proc.stdout + proc.stderr
+
+
 def test_the_smoke_simulations_pass(library):
     proc = fusesoc(library, "run", "--build-root", "build/sim", "--target", "sim", "prenc:reader:core")
     found = re.search(r"prenc_core_smoke: PASS: N = 10, first valid after ([\d.]+) slots", proc.stdout)
