@@ -54,3 +54,34 @@ def test_a_changed_port_list_is_an_error():
     text = head_source().replace("output wire", "output wire [0:0] extra_port,\n  output wire", 1)
     with pytest.raises(equiv.FlowError, match="ports differ"):
         run("ports", text)
+
+
+def core_source() -> str:
+    return subprocess.run(["git", "show", "HEAD:rtl/core/prenc_core.v"], cwd=REPO, check=True,
+                          capture_output=True, text=True).stdout
+
+
+@pytest.mark.synth
+def test_the_whole_core_with_its_rom_is_proven_equal_to_itself():
+    """prenc_core reads its ROM at elaboration: equiv.py writes the default disc's table
+    and compares the whole hierarchy, the submodules too taken at the base revision."""
+    out = SIM_BUILD / "equiv" / "core-same"
+    out.mkdir(parents=True, exist_ok=True)
+    source = out / "prenc_core_edit.v"
+    source.write_text(core_source())
+    proven, summary = equiv.check("prenc_core", "HEAD", source, {}, 2, out, whole=True)
+    assert proven, summary
+    assert (out / "prenc_rom_n10.hex").is_file()
+
+
+@pytest.mark.synth
+def test_a_core_that_adds_the_window_base_is_not():
+    text = core_source()
+    assert "conv1 - base1" in text
+    out = SIM_BUILD / "equiv" / "core-mutant"
+    out.mkdir(parents=True, exist_ok=True)
+    source = out / "prenc_core_edit.v"
+    source.write_text(text.replace("conv1 - base1", "conv1 + base1", 1))
+    proven, summary = equiv.check("prenc_core", "HEAD", source, {}, 2, out, whole=True)
+    assert not proven
+    assert "off1_j_reg" in summary and "NOT proven" in summary
