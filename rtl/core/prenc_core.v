@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // prenc_core: the reader of a pseudorandom absolute encoder, pins to verified position.
 //
-//   pins -> prenc_input_conditioner -> prenc_quadrature -> prenc_sampler (strobes)
-//                                                       -> prenc_position (count, events)
+//   pins -> prenc_input_conditioner -> prenc_quadrature, and on the same edge
+//           prenc_sampler (strobes) and prenc_position (count, events)
 //        -> prenc_track_word x2 (each head's word in count space; raw or law mode)
 //        -> prenc_converter x2 (each word -> slot, one clock)
 //        -> J1 registers (each track's offset = converted slot - window base)
@@ -16,7 +16,7 @@
 // slots each (default N + 1 for N >= 8), or one head's word holds one offset over
 // N + LOCK_ONE - 1 distinct slots (default 2N + 1), in either direction.
 //
-// Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 6 + FILTER
+// Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 5 + FILTER
 // clocks earlier, all three aligned. Hold rst for at least 4 clocks.
 //
 // Parameters
@@ -127,11 +127,17 @@ module prenc_core #(
     .in_clean (clean)
   );
 
-  // Quadrature: quarter, steps, illegal transitions, the incremental count.
-  wire [1:0] quarter;
+  // Quadrature: quarter, steps, illegal transitions, the incremental count. The
+  // sampler and the position take the decoded step on the decoder's own edge (its
+  // *_next outputs): one clock of latency less than behind its registers.
+  wire [1:0] quarter;  // the registered step: not used, but `direction`
   wire       step;
   wire       step_cw;
   wire       illegal;
+  wire [1:0] quarter_next;
+  wire       step_next;
+  wire       step_cw_next;
+  wire       illegal_next;
 
   prenc_quadrature #(
     .COUNT_WIDTH (COUNT_WIDTH),
@@ -147,7 +153,11 @@ module prenc_core #(
     .step_cw       (step_cw),
     .illegal       (illegal),
     .illegal_count (sync_errors),
-    .count         (incremental)
+    .count         (incremental),
+    .quarter_next  (quarter_next),
+    .step_next     (step_next),
+    .step_cw_next  (step_cw_next),
+    .illegal_next  (illegal_next)
   );
 
   // Mid-slot strobes with both heads.
@@ -158,16 +168,17 @@ module prenc_core #(
   wire strobe_head2;
 
   prenc_sampler #(
-    .JUMP (HYPOTHESES)  // the landing reading serves the hypotheses' votes
+    .JUMP       (HYPOTHESES),  // the landing reading serves the hypotheses' votes
+    .HEAD_DELAY (0)            // the step comes with the heads' sample
   ) u_sampler (
     .clk          (clk),
     .rst          (rst),
     .head1_in     (clean[0]),
     .head2_in     (clean[1]),
-    .step         (step),
-    .step_cw      (step_cw),
-    .quarter      (quarter),
-    .break_in     (illegal),
+    .step         (step_next),
+    .step_cw      (step_cw_next),
+    .quarter      (quarter_next),
+    .break_in     (illegal_next),
     .strobe       (strobe),
     .strobe_cw    (strobe_cw),
     .strobe_moved (strobe_moved),
@@ -189,10 +200,10 @@ module prenc_core #(
   ) u_position (
     .clk           (clk),
     .rst           (rst),
-    .quarter       (quarter),
-    .step          (step),
-    .step_cw       (step_cw),
-    .illegal       (illegal),
+    .quarter       (quarter_next),
+    .step          (step_next),
+    .step_cw       (step_cw_next),
+    .illegal       (illegal_next),
     .slot          (slot),
     .up            (up),
     .down          (down),
@@ -421,7 +432,7 @@ module prenc_core #(
   );
 
   wire unused_ok = &{1'b0, strobe_cw, strobe_moved, strobe_t2, word1, word2,
-                     conv1_valid, conv2_valid};
+                     conv1_valid, conv2_valid, quarter, step, illegal};
 
   assign pos_abs      = slot_out + offset;
   assign pos_hyb      = {pos_abs, quarter_out};
@@ -448,17 +459,17 @@ module prenc_core #(
   always @(*) begin
     if (!f_past_valid || (f_rst_run != 3'd0 && f_rst_run < 3'd4)) assume (rst);
   end
-  // The decoder's steps, delayed to meet the position (prenc_position: one clock to
-  // the count, DECISION_DELAY = 3 more to slot_out).
+  // The decoder's steps, delayed to meet the position (prenc_position: the count on
+  // the decoder's edge, DECISION_DELAY = 3 more to slot_out).
   reg [3:0] f_step_d;
   reg [3:0] f_cw_d;
   reg [3:0] f_illegal_d;
   reg [N+1:0] f_hyb_prev;
   reg         f_valid_prev;
   always @(posedge clk) begin
-    f_step_d     <= {f_step_d[2:0], step};
-    f_cw_d       <= {f_cw_d[2:0], step_cw};
-    f_illegal_d  <= {f_illegal_d[2:0], illegal};
+    f_step_d     <= {f_step_d[2:0], step_next};
+    f_cw_d       <= {f_cw_d[2:0], step_cw_next};
+    f_illegal_d  <= {f_illegal_d[2:0], illegal_next};
     f_hyb_prev   <= pos_hyb;
     f_valid_prev <= pos_valid;
   end
@@ -510,8 +521,8 @@ module prenc_core #(
     assume (f_missed <= `F_MISSED && f_misread <= `F_MISREADS);
   end
   // The pins of clock k are sampled by the edge that ends it; the outputs show that
-  // sample 6 + FILTER edges later, on clock k + 7 + FILTER.
-  localparam integer F_LATENCY = 7 + FILTER;
+  // sample 5 + FILTER edges later, on clock k + 6 + FILTER.
+  localparam integer F_LATENCY = 6 + FILTER;
   reg [N+1:0] f_h_d [0:F_LATENCY-1];
   integer f_d;
   always @(posedge clk) begin

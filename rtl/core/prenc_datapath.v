@@ -89,6 +89,11 @@ module prenc_datapath #(
     .in_clean (clean)
   );
 
+  wire [1:0] quarter_next;
+  wire       step_next;
+  wire       step_cw_next;
+  wire       illegal_next;
+
   prenc_quadrature #(
     .COUNT_WIDTH (COUNT_WIDTH),
     .ERROR_WIDTH (ERROR_WIDTH)
@@ -103,8 +108,14 @@ module prenc_datapath #(
     .step_cw       (step_cw),
     .illegal       (illegal),
     .illegal_count (illegal_count),
-    .count         (step_count)
+    .count         (step_count),
+    .quarter_next  (quarter_next),  // the datapath takes the registered step
+    .step_next     (step_next),
+    .step_cw_next  (step_cw_next),
+    .illegal_next  (illegal_next)
   );
+
+  wire unused_next = &{1'b0, quarter_next, step_next, step_cw_next, illegal_next};
 
   prenc_sampler u_sampler (
     .clk          (clk),

@@ -20,7 +20,8 @@
 // hold rst for at least 4 clocks (3 with FILTER = 0), so that the state it loads is
 // the settled input and not the conditioner's start-up value.
 //
-// Ports (outputs are registered, one clock after the input they describe)
+// Ports (outputs are registered, one clock after the input they describe, but the
+// *_next ones)
 //   a, b           conditioned sync inputs
 //   clear_errors   clears illegal_count (wins over a simultaneous illegal transition)
 //   quarter        q of the current state
@@ -29,6 +30,11 @@
 //   illegal        an illegal transition happened
 //   illegal_count  illegal transitions since reset or clear_errors, saturating
 //   count          CW steps minus CCW steps since reset (two's complement, wraps)
+//   quarter_next, step_next, step_cw_next, illegal_next
+//                  what quarter, step, step_cw and illegal take at this edge (out of
+//                  reset), for a
+//                  stage that registers the decoded step itself (prenc_core's sampler
+//                  and position): the core saves a clock of latency with them
 
 `resetall
 `timescale 1ns / 1ps
@@ -48,7 +54,11 @@ module prenc_quadrature #(
   output wire                   step_cw,
   output wire                   illegal,
   output wire [ERROR_WIDTH-1:0] illegal_count,
-  output wire [COUNT_WIDTH-1:0] count
+  output wire [COUNT_WIDTH-1:0] count,
+  output wire [1:0]             quarter_next,
+  output wire                   step_next,
+  output wire                   step_cw_next,
+  output wire                   illegal_next
 );
 
   generate
@@ -73,6 +83,14 @@ module prenc_quadrature #(
   reg [COUNT_WIDTH-1:0] count_reg;
 
   wire [1:0] delta = q_in - quarter_reg;
+
+  // The registers' next values, for the stages that take the step on the same edge
+  // (out of reset: those stages reset themselves, and rst here would be a LUT level on
+  // the path from the pins' registers).
+  assign quarter_next = q_in;
+  assign step_next    = delta[0];
+  assign step_cw_next = (delta == 2'd1) | (step_cw_reg & (delta != 2'd3));
+  assign illegal_next = (delta == 2'd2);
 
   always @(posedge clk) begin
     quarter_reg <= q_in;
@@ -133,6 +151,14 @@ module prenc_quadrature #(
   end
   initial assume (rst);
   wire [1:0] f_delta = quarter_reg - f_q_prev;  // what the last input did
+  // The *_next outputs are what the registers take at the edge, out of reset.
+  reg [4:0] f_next_prev;
+  always @(posedge clk) f_next_prev <= {quarter_next, step_next, step_cw_next, illegal_next};
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      assert ({quarter_reg, step_reg, step_cw_reg, illegal_reg} == f_next_prev);
+    end
+  end
   // The quarter of the last input sample, from the datasheet's table (A, B) -> q:
   // (0, 1) 0, (0, 0) 1, (1, 0) 2, (1, 1) 3; and the error count's expected value.
   reg [1:0]             f_q_pins;

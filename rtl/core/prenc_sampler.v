@@ -4,8 +4,10 @@
 // The datasheet samples the code tracks at mid-slot: on A rising going CW (q 1 -> 2)
 // and on A falling going CCW (q 2 -> 1). This module turns the quadrature decoder's
 // steps into those strobes, each with its direction, and latches both heads as they
-// were at the very input sample where A changed (the heads are delayed by the same
-// pipeline as the step), so a fast disc cannot move the heads on before they are read.
+// were at the very input sample where A changed (with HEAD_DELAY = 1 the heads are
+// delayed by the same pipeline as the decoder's registered step; with 0 the step comes
+// on the same clock as the heads, from the decoder's *_next outputs), so a fast disc
+// cannot move the heads on before they are read.
 //
 // Reversals: consecutive strobes in the same direction are one slot apart;
 // consecutive strobes in opposite directions are the same mid-slot point crossed
@@ -23,11 +25,15 @@
 // They are evidence for the reader's two hypotheses, not a mid-slot sample.
 //
 // Parameters
-//   JUMP   1: also strobe the landing reading after an illegal transition; 0: mid-slot only
+//   JUMP         1: also strobe the landing reading after an illegal transition; 0:
+//                mid-slot only
+//   HEAD_DELAY   1: the step is the decoder's registered one, a clock after the heads'
+//                sample; 0: the step is the decoder's *_next, with the heads' sample
+//                (prenc_core: a clock less latency)
 //
 // Ports (outputs registered)
 //   head1_in, head2_in   conditioned heads, same latency as the decoder's inputs
-//   step, step_cw        from prenc_quadrature (one clock after the input sample)
+//   step, step_cw        from prenc_quadrature (HEAD_DELAY clocks after the input sample)
 //   quarter              from prenc_quadrature: q after the step
 //   break_in             continuity lost (an illegal transition): forget direction
 //   strobe               a mid-slot sampling instant
@@ -40,7 +46,8 @@
 `default_nettype none
 
 module prenc_sampler #(
-  parameter integer JUMP = 0
+  parameter integer JUMP       = 0,
+  parameter integer HEAD_DELAY = 1
 ) (
   input  wire       clk,
   input  wire       rst,
@@ -62,6 +69,10 @@ module prenc_sampler #(
       initial $display("ERROR: %m: parameter JUMP = %0d must be 0 or 1", JUMP);
       prenc_sampler_parameter_JUMP_must_be_0_or_1 u_stop ();
     end
+    if (HEAD_DELAY != 0 && HEAD_DELAY != 1) begin : g_bad_head_delay
+      initial $display("ERROR: %m: parameter HEAD_DELAY = %0d must be 0 or 1", HEAD_DELAY);
+      prenc_sampler_parameter_HEAD_DELAY_must_be_0_or_1 u_stop ();
+    end
   endgenerate
 
   // Heads delayed one clock, to line up with the decoder's step output.
@@ -81,6 +92,9 @@ module prenc_sampler #(
   reg landing_head2_reg;
 
   wire mid_slot = step & (step_cw ? (quarter == 2'd2) : (quarter == 2'd1));
+  // The heads at the input sample of the step.
+  wire head1 = (HEAD_DELAY == 1) ? head1_d : head1_in;
+  wire head2 = (HEAD_DELAY == 1) ? head2_d : head2_in;
 
   always @(posedge clk) begin
     head1_d    <= head1_in;
@@ -90,8 +104,8 @@ module prenc_sampler #(
       strobe_reg       <= 1'b1;
       strobe_cw_reg    <= step_cw;
       strobe_moved_reg <= ~have_last_reg | (step_cw == last_cw_reg);
-      strobe_head1_reg <= head1_d;
-      strobe_head2_reg <= head2_d;
+      strobe_head1_reg <= head1;
+      strobe_head2_reg <= head2;
       have_last_reg    <= 1'b1;
       last_cw_reg      <= step_cw;
     end else if (landing_reg && !step && !break_in) begin
@@ -103,8 +117,8 @@ module prenc_sampler #(
     end
     landing_reg       <= (JUMP == 1) & break_in & (quarter[1] ^ quarter[0]);
     landing_cw_reg    <= step_cw;
-    landing_head1_reg <= head1_d;
-    landing_head2_reg <= head2_d;
+    landing_head1_reg <= head1;
+    landing_head2_reg <= head2;
     if (break_in) begin
       have_last_reg <= 1'b0;
     end
@@ -144,8 +158,9 @@ module prenc_sampler #(
     f_cw_prev    <= step_cw;
     f_hin1       <= head1_in;
     f_hin2       <= head2_in;
-    f_h1_prev    <= f_hin1;    // the heads' input two clocks back: the step's sample
-    f_h2_prev    <= f_hin2;
+    // the heads at the step's sample: their input HEAD_DELAY clocks before the step
+    f_h1_prev    <= (HEAD_DELAY == 1) ? f_hin1 : head1_in;
+    f_h2_prev    <= (HEAD_DELAY == 1) ? f_hin2 : head2_in;
     f_land_prev  <= break_in & (quarter == 2'd1 || quarter == 2'd2);
     f_event_prev <= step | break_in;
   end

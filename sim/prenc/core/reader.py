@@ -7,13 +7,15 @@
 
 The stages, each the model of one RTL module, registered as in the RTL:
 
-    pins -> InputConditioner -> QuadratureDecoder -> Sampler (strobes, heads)
-                                                  -> Position (count, events)
+    pins -> InputConditioner -> QuadratureDecoder, and on the same edge
+                                Sampler (strobes, heads) and Position (count, events)
          -> TrackWord x2 (one head each; raw or law mode) -> converter (the ROM)
          -> J1 registers (offset of each track's window) -> ModeFsm (the judge)
          -> pos_abs = count (delayed) + offset, pos_valid, mode
 
-`clock_decoded` enters after the quadrature decoder, for the fault campaign.
+The sampler and the position take the decoder's step on the decoder's own edge (its
+next values, as prenc_quadrature's *_next outputs give them to the RTL's).
+`clock_decoded` enters there, for the fault campaign.
 Latency: outputs show the pins LATENCY + FILTER clocks earlier.
 """
 
@@ -33,7 +35,7 @@ from .track_word import SCORE_LIMIT, SCORE_UP, TrackEvent, TrackWord
 if TYPE_CHECKING:  # the virtual encoder feeds the model; the model does not need it
     from ..virtual.encoder import EncoderRun
 
-LATENCY = 6  # clocks from a pin to pos_abs / pos_valid, plus FILTER
+LATENCY = 5  # clocks from a pin to pos_abs / pos_valid, plus FILTER
 
 
 class Step(NamedTuple):
@@ -72,7 +74,8 @@ class Reader:
         self.mask = code.mask
         self.conditioner = InputConditioner(4, filter_len)
         self.quadrature = QuadratureDecoder()
-        self.sampler = Sampler(jump=hypotheses)  # the landing reading serves the hypotheses
+        # The landing reading serves the hypotheses; the step comes with the heads' sample.
+        self.sampler = Sampler(jump=hypotheses, head_delay=False)
         self.position = Position(code.n)
         self.fsm = ModeFsm(code.n, lock_both=lock_both, lock_one=lock_one, dual_votes=dual_votes,
                            dual_span=dual_span, hypotheses=hypotheses)
@@ -89,8 +92,9 @@ class Reader:
         return ReaderOutput(int(self.fsm.valid), pos, 4 * pos + self.position.quarter_d[-1],
                             int(self.fsm.mode), self.fsm.dual)
 
-    def _core(self, quad_before: QuadratureOutput, heads_before: Sequence[int], rst: int) -> None:
-        """Everything after the quadrature decoder, for one rising edge."""
+    def _core(self, quad: QuadratureOutput, heads: Sequence[int], rst: int) -> None:
+        """Everything after the quadrature decoder, for one rising edge: `quad` is what the
+        decoder registers at this edge, `heads` the heads of the same input sample."""
         tracks, pos, s = self.tracks, self.position, self.sampler.out
         self.fsm.clock(self.j1, tuple(t.supported for t in tracks), tuple(t.law for t in tracks), rst=rst)
         self.j1 = JudgeInput.of_tracks(
@@ -106,9 +110,9 @@ class Reader:
                     dual=dual, dual_cw=dual_cw, rst=rst)
         self.t_illegal, self.t_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
         self.strobes += s.strobe and not rst
-        pos.clock(quad_before, rst=rst)
-        self.sampler.clock(heads_before[0], heads_before[1], quad_before.step, quad_before.step_cw,
-                           quad_before.quarter, break_in=quad_before.illegal, rst=rst)
+        pos.clock(quad, rst=rst)
+        self.sampler.clock(heads[0], heads[1], quad.step, quad.step_cw, quad.quarter,
+                           break_in=quad.illegal, rst=rst)
 
     def _latch_ctrl(self) -> None:
         """The judge's registered outputs, as the tracks see them on this edge."""
@@ -116,17 +120,15 @@ class Reader:
         self._ctrl = (list(f.flush), list(f.law_on), f.realign, f.dual, f.dual_cw)
 
     def clock(self, raw: Sequence[int], rst: int = 0) -> ReaderOutput:
-        quad_before = self.quadrature.output()
         clean_before = self.clean
         self._latch_ctrl()
-        self._core(quad_before, clean_before, rst)
-        self.quadrature.clock(clean_before[2], clean_before[3], rst=rst)
+        quad = self.quadrature.clock(clean_before[2], clean_before[3], rst=rst)
+        self._core(quad, clean_before, rst)
         self.clean = self.conditioner.clock(list(raw), rst=rst)
         return self.output()
 
     def clock_decoded(self, quad: QuadratureOutput, head1: int, head2: int, rst: int = 0) -> ReaderOutput:
-        """One edge with `quad` as the decoder's registers and the heads read with it."""
-        self.sampler.head1_d, self.sampler.head2_d = head1, head2
+        """One edge with `quad` as what the decoder registers and the heads read with it."""
         self._latch_ctrl()
         self._core(quad, (head1, head2), rst)
         return self.output()

@@ -151,7 +151,7 @@ class LeanReader(Reader):
         self.tracks = [LeanTrack(code, 0, ext_max), LeanTrack(code, code.n - 1, ext_max)]
         self.t_slot = 0
 
-    def _core(self, quad_before: QuadratureOutput, heads_before: Sequence[int], rst: int) -> None:
+    def _core(self, quad: QuadratureOutput, heads: Sequence[int], rst: int) -> None:
         f, tracks, pos, s = self.fsm, self.tracks, self.position, self.sampler.out
         flush, law_on, _, dual, dual_cw = self._ctrl
         offset = f.offset  # the judge's offset as the tracks see it on this edge
@@ -166,6 +166,6 @@ class LeanReader(Reader):
         self.t_illegal, self.t_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
         self.t_slot = pos.slot
         self.strobes += s.strobe and not rst
-        pos.clock(quad_before, rst=rst)
-        self.sampler.clock(heads_before[0], heads_before[1], quad_before.step, quad_before.step_cw,
-                           quad_before.quarter, break_in=quad_before.illegal, rst=rst)
+        pos.clock(quad, rst=rst)
+        self.sampler.clock(heads[0], heads[1], quad.step, quad.step_cw, quad.quarter,
+                           break_in=quad.illegal, rst=rst)

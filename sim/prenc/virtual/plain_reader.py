@@ -38,7 +38,7 @@ class PlainReader:
         self.verify = code.n + 1 if verify is None else verify
         self.conditioner = InputConditioner(4, filter_len)
         self.quadrature = QuadratureDecoder()
-        self.sampler = Sampler()
+        self.sampler = Sampler(head_delay=False)  # the core's front end, at its latency
         self.position = Position(code.n)
         self.tracks = [TrackWord(code, 0), TrackWord(code, code.n - 1)]
         self.clean = [0, 0, 0, 1]
@@ -54,8 +54,8 @@ class PlainReader:
             t.known, t.ext_lo, t.ext_hi, t.full = 0, 0, 0, 0
 
     def clock(self, raw: Sequence[int], rst: int = 0) -> ReaderOutput:
-        quad = self.quadrature.output()
         heads = self.clean
+        quad = self.quadrature.clock(heads[2], heads[3], rst=rst)
         pos, s = self.position, self.sampler.out
         for h, t in enumerate(self.tracks):
             t.clock(TrackEvent(strobe=s.strobe, up=pos.up, down=pos.down, illegal=pos.illegal,
@@ -82,7 +82,6 @@ class PlainReader:
         pos.clock(quad, rst=rst)
         self.sampler.clock(heads[0], heads[1], quad.step, quad.step_cw, quad.quarter,
                            break_in=quad.illegal, rst=rst)
-        self.quadrature.clock(heads[2], heads[3], rst=rst)
         self.clean = self.conditioner.clock(list(raw), rst=rst)
         p = (pos.slot_d[-1] + self.offset) & self.mask
         valid = self.valid_d[-1]

@@ -27,12 +27,13 @@ from .encoder import EncoderRun, Disc, VirtualEncoder
 from .faults import (Bounce, ContaminatedSlot, DeadHead, MissedQuadratureState, RandomGlitches,
                      RandomMisreads, TransientMisread)
 from ..core.mode_fsm import Mode
+from ..core.reader import LATENCY
 from .trajectory import Trajectory
 
 
 def core_latency(filter_len: int) -> int:
     """Clocks from the pins to prenc_core's pos_abs, pos_hyb and pos_valid."""
-    return 6 + filter_len
+    return LATENCY + filter_len
 
 
 def max_speed(filter_len: int) -> float:

@@ -22,6 +22,7 @@ from runner import SIMULATORS, run
 TOPLEVEL = "prenc_quadrature"
 RESET_CLOCKS = 3
 OUTPUTS = ("quarter", "step", "step_cw", "illegal", "illegal_count", "count")
+NEXT = ("quarter", "step", "step_cw", "illegal")  # also given as <name>_next before the edge
 
 
 def widths(dut) -> tuple[int, int]:
@@ -72,8 +73,12 @@ async def matches_model_with_missed_states_glitches_and_clears(dut):
         a, b, clear = int(enc.a[k]), int(enc.b[k]), int(k in clears)
         out = model.clock(a, b, clear)
         illegal_seen += out.illegal
-        await clock_and_check(dut, {"a": a, "b": b, "clear_errors": clear}, out._asdict(),
-                              lambda: f"clock {k}, seed {seed}")
+        for name, value in {"a": a, "b": b, "clear_errors": clear}.items():
+            getattr(dut, name).value = value
+        await ReadOnly()  # before the edge: the *_next outputs are what it will register
+        nxt = {name: int(getattr(dut, f"{name}_next").value) for name in NEXT}
+        assert nxt == {name: getattr(out, name) for name in NEXT}, f"clock {k}, seed {seed}: {nxt}"
+        await clock_and_check(dut, {}, out._asdict(), lambda: f"clock {k}, seed {seed}")
     assert illegal_seen >= 12  # every missed state (and A/B glitching together) was flagged
 
 

@@ -5,7 +5,8 @@ Inputs come from the datapath model chain on virtual-encoder runs with random
 motion, dithering across A's edge and missed quadrature states (the chain itself is
 checked against the truth in sim/tests/core/test_datapath.py); the expected outputs from
 prenc.core.sampler.Sampler with the same JUMP (landing readings after a missed state: the
-core's sampler).
+core's sampler) and HEAD_DELAY (0: the step comes on the clock of the heads' sample, as
+the core gives it from the decoder's *_next outputs; 1: the decoder's registered step).
 """
 
 from __future__ import annotations
@@ -41,8 +42,9 @@ def scenario(seed: int):
 async def matches_model_through_reversals_and_breaks(dut):
     seed = rng().randrange(1 << 30)
     jump = int(dut.JUMP.value)
+    head_delay = int(dut.HEAD_DELAY.value)
     trace = scenario(seed)
-    model = Sampler(jump=bool(jump))
+    model = Sampler(jump=bool(jump), head_delay=bool(head_delay))
     cocotb.start_soon(Clock(dut.clk, 10, unit="ns").start())
     strobes = landings = 0
     for k, now in enumerate(trace):
@@ -50,9 +52,13 @@ async def matches_model_through_reversals_and_breaks(dut):
         inputs = {"rst": int(k < RESET), "head1_in": 0, "head2_in": 0, "step": 0, "step_cw": 0,
                   "quarter": 0, "break_in": 0}
         if before:
-            inputs.update(head1_in=before.clean[0], head2_in=before.clean[1], step=before.quad.step,
-                          step_cw=before.quad.step_cw, quarter=before.quad.quarter,
+            inputs.update(step=before.quad.step, step_cw=before.quad.step_cw, quarter=before.quad.quarter,
                           break_in=before.quad.illegal)
+            # The heads of the step's sample: the clock before the step (HEAD_DELAY 0), or
+            # the step's clock, delayed by the sampler (HEAD_DELAY 1).
+            heads = before if head_delay else trace[k - 2] if k >= 2 else None
+            if heads:
+                inputs.update(head1_in=heads.clean[0], head2_in=heads.clean[1])
         s = model.clock(inputs["head1_in"], inputs["head2_in"], inputs["step"], inputs["step_cw"],
                         inputs["quarter"], break_in=inputs["break_in"], rst=inputs["rst"])
         expected = {"strobe": s.strobe}
@@ -68,7 +74,8 @@ async def matches_model_through_reversals_and_breaks(dut):
         assert landings == 0
 
 
+@pytest.mark.parametrize("head_delay", [1, 0])
 @pytest.mark.parametrize("jump", [0, 1])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_sampler(simulator, jump):
-    run(__file__, TOPLEVEL, simulator, parameters={"JUMP": jump})
+def test_prenc_sampler(simulator, jump, head_delay):
+    run(__file__, TOPLEVEL, simulator, parameters={"JUMP": jump, "HEAD_DELAY": head_delay})
