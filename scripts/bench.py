@@ -36,7 +36,9 @@
    placed with issue 15's aims as constraints
    (120 MHz on iCE40, 150 MHz on ECP5) and timing allowed to fail, to read its Fmax;
    at N = 10 also with placer seeds 2 and 3 (the spread of Fmax is several per cent);
-   and the core with HYPOTHESES = 0 (no hypotheses after a missed state), what they cost.
+   and the core with HYPOTHESES = 0 (no hypotheses after a missed state), what they cost;
+   and with CONV_REG = 1 (the converters' output registered, the same outputs) on ECP5-25k,
+   seeds 1 to 3, and the HX8K.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios); the
    time to rebuild Table 1 to n = 10 (20 s of exact search per open entry); the RTL
@@ -179,6 +181,21 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
         try:
             r = synth.core_build(target, 10, aim, out, require_timing=False, parameters={"HYPOTHESES": 0})
             rows.append((what, 10, _synth_line(synth, r)))
+        except synth.FlowError as err:
+            rows.append((what, 10, f"FAILED: {err}"))
+    # CONV_REG = 1: the converters' output registered (same outputs): what it buys where the
+    # block RAM's clock-to-out is the worst path (ECP5), and what it costs on the HX8K.
+    for target, aim, seeds in (("ecp5-25k", 150.0, (1, 2, 3)), ("ice40-hx8k", 120.0, (1,))):
+        out = SIM_BUILD / "bench" / "synth" / f"core-{target}-n10-conv-reg"
+        what = f"core alone, CONV_REG = 1, {synth.TARGETS[target].name}"
+        try:
+            runs = [synth.core_build(target, 10, aim, out.with_name(f"{out.name}-seed{s}"), require_timing=False,
+                                     seed=s, parameters={"CONV_REG": 1}) for s in seeds]
+            line = _synth_line(synth, runs[0])
+            if len(runs) > 1:
+                fmax = [_fmax(r) for r in runs]
+                line += f"; seeds 1-{len(runs)}: {min(fmax):.1f} to {max(fmax):.1f} MHz"
+            rows.append((what, 10, line))
         except synth.FlowError as err:
             rows.append((what, 10, f"FAILED: {err}"))
     # prenc_wb at the boards' design clocks (the UP5K through the few-pin harness).

@@ -41,6 +41,11 @@
 //                less logic, for sync tracks that never miss a state (default 1)
 //   SCORE_UP, SCORE_LIMIT   a track's health score: + SCORE_UP per mismatch, - 1 per
 //                match, unsupported at SCORE_LIMIT (defaults 4, 12)
+//   CONV_REG     1: the converters' output is registered before the offset's subtraction
+//                (ECP5: its block RAM's clock-to-out without the output register is the
+//                worst path); 0: subtracted straight from the block RAM (iCE40, default).
+//                The same outputs either way (the judge reads an offset only while it
+//                is steady); 1 costs 4N flip-flops
 //
 // Ports
 //   head1, head2, sync_a, sync_b   raw asynchronous inputs (datasheet levels)
@@ -80,7 +85,8 @@ module prenc_core #(
   parameter integer DUAL_SPAN   = 12,
   parameter integer HYPOTHESES  = 1,
   parameter integer SCORE_UP    = 4,
-  parameter integer SCORE_LIMIT = 12
+  parameter integer SCORE_LIMIT = 12,
+  parameter integer CONV_REG    = 0
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -111,6 +117,10 @@ module prenc_core #(
       initial $display("ERROR: %m: parameter SHIFT = %0d must be 2^(N-1)+N-1 = %0d for N = %0d",
                        SHIFT, (1 << (N - 1)) + N - 1, N);
       prenc_core_parameter_SHIFT_must_be_2_pow_N_minus_1_plus_N_minus_1 u_stop ();
+    end
+    if (CONV_REG != 0 && CONV_REG != 1) begin : g_bad_conv_reg
+      initial $display("ERROR: %m: parameter CONV_REG = %0d must be 0 or 1", CONV_REG);
+      prenc_core_parameter_CONV_REG_must_be_0_or_1 u_stop ();
     end
   endgenerate
 
@@ -237,6 +247,7 @@ module prenc_core #(
   wire [5:0]   span2;
   wire [1:0]   settled;
   wire [1:0]   quiet;
+  wire [1:0]   steady;
   wire         dual;     // two hypotheses open (mode 4)
   wire         dual_cw;
 
@@ -280,7 +291,8 @@ module prenc_core #(
     .errors       (track1_errors),
     .span         (span1),
     .settled      (settled[0]),
-    .quiet        (quiet[0])
+    .quiet        (quiet[0]),
+    .steady       (steady[0])
   );
 
   prenc_track_word #(
@@ -321,7 +333,8 @@ module prenc_core #(
     .errors       (track2_errors),
     .span         (span2),
     .settled      (settled[1]),
-    .quiet        (quiet[1])
+    .quiet        (quiet[1]),
+    .steady       (steady[1])
   );
 
   wire [N-1:0] conv1;
@@ -353,6 +366,37 @@ module prenc_core #(
     .pos        (conv2)
   );
 
+  // The converted slots and the bases they go with: straight from the block RAMs, or
+  // registered first (CONV_REG = 1), and then the J1 offsets are the words' of the
+  // clock before, which the judge reads only while steady (the same as now).
+  wire [N-1:0] conv1_j;
+  wire [N-1:0] conv2_j;
+  wire [N-1:0] base1_j;
+  wire [N-1:0] base2_j;
+  generate
+    if (CONV_REG == 1) begin : g_conv_reg
+      reg [N-1:0] conv1_reg;
+      reg [N-1:0] conv2_reg;
+      reg [N-1:0] base1_reg;
+      reg [N-1:0] base2_reg;
+      always @(posedge clk) begin
+        conv1_reg <= conv1;
+        conv2_reg <= conv2;
+        base1_reg <= base1;
+        base2_reg <= base2;
+      end
+      assign conv1_j = conv1_reg;
+      assign conv2_j = conv2_reg;
+      assign base1_j = base1_reg;
+      assign base2_j = base2_reg;
+    end else begin : g_conv_direct
+      assign conv1_j = conv1;
+      assign conv2_j = conv2;
+      assign base1_j = base1;
+      assign base2_j = base2;
+    end
+  endgenerate
+
   // Events carried alongside the track words, then the J1 registers: each track's
   // offset and evidence, one clock before the judge.
   reg         illegal_t_reg;
@@ -373,8 +417,8 @@ module prenc_core #(
     illegal_j_reg     <= illegal_t_reg;
     illegal_cw_j_reg  <= illegal_cw_t_reg;
     slot_j_reg        <= slot_t_reg;
-    off1_j_reg        <= conv1 - base1;
-    off2_j_reg        <= conv2 - base2;
+    off1_j_reg        <= conv1_j - base1_j;
+    off2_j_reg        <= conv2_j - base2_j;
     if (rst) begin
       illegal_t_reg     <= 1'b0;
       slot_t_reg        <= {N{1'b0}};
@@ -408,6 +452,7 @@ module prenc_core #(
     .slot_ahead   (slot_t_reg[1:0]),
     .slot_ahead2  (slot),
     .full_ahead   (full),
+    .steady_ahead (steady),
     .off1         (off1_j_reg),
     .off2         (off2_j_reg),
     .span1_ahead   (span1),

@@ -12,6 +12,10 @@
 //     is not settled on another offset, lock: that
 //     offset; those tracks turn to law mode. A head that is not quiet (a
 //     disagreement in its last QUIET checks) needs LOCK_EXTRA slots more.
+//     A track's offset counts only while it is steady (the same as on the clock
+//     before: prenc_track_word), and a full, settled track whose offset just moved
+//     blocks any lock on that clock: so an offset that lags the words by one clock
+//     (prenc_core with CONV_REG = 1) gives the same decisions.
 //   1 NORMAL, 2 REDUCED_1, 3 REDUCED_2 (pos_valid 1): which law-mode tracks support
 //     the offset (both, track 1 only, track 2 only). A raw track whose window converts
 //     to the offset rejoins. No track left: the offset is dropped (INCREMENTAL).
@@ -68,6 +72,7 @@ module prenc_mode_fsm #(
   input  wire [1:0]   slot_ahead,   // the next clock's slot (the J1 input), two LSBs
   input  wire [N-1:0] slot_ahead2,  // the slot after it (the track words' input)
   input  wire [1:0]   full_ahead,     // lock evidence of the next event (the J1 input)
+  input  wire [1:0]   steady_ahead,   // each track's offset the same as on the clock before
   input  wire [N-1:0] off1,
   input  wire [N-1:0] off2,
   input  wire [5:0]   span1_ahead,
@@ -169,18 +174,21 @@ module prenc_mode_fsm #(
   wire [5:0] need_both = (&quiet_ahead) ? NEED_BOTH : DEEP_BOTH;
   wire [5:0] need_one1 = quiet_ahead[0] ? NEED_ONE : DEEP_ONE;
   wire [5:0] need_one2 = quiet_ahead[1] ? NEED_ONE : DEEP_ONE;
-  reg  [1:0] full;
-  reg  [1:0] ready;       // full and settled
+  reg  [1:0] full;        // full and steady: its offset may be read
+  reg  [1:0] ready;       // full, steady and settled
+  reg        blocked;     // a full, settled track's offset just moved: no lock now
   reg  [1:0] span_both;   // span >= the two-track need
   reg  [1:0] span_one;    // span >= the one-track need
   always @(posedge clk) begin
-    full      <= full_ahead;
-    ready     <= full_ahead & settled_ahead;
+    full      <= full_ahead & steady_ahead;
+    ready     <= full_ahead & settled_ahead & steady_ahead;
+    blocked   <= |(full_ahead & settled_ahead & ~steady_ahead);
     span_both <= {span2_ahead >= need_both, span1_ahead >= need_both};
     span_one  <= {span2_ahead >= need_one2, span1_ahead >= need_one1};
     if (rst) begin
       full      <= 2'b00;
       ready     <= 2'b00;
+      blocked   <= 1'b0;
       span_both <= 2'b00;
       span_one  <= 2'b00;
     end
@@ -329,7 +337,7 @@ module prenc_mode_fsm #(
   // A lock on a strobe while no offset is held: which tracks, and the mode it gives,
   // from registers for either outcome of the offsets' comparison, which then chooses.
   // Where the offsets agree either is the lock's; where not, the one head that locks.
-  wire       lock_try      = ~illegal & strobe & ~locked;
+  wire       lock_try      = ~illegal & strobe & ~locked & ~blocked;
   wire       lock_now      = lock_try & (agree12 ? lock_agree : lock_alone);
   wire       one1_apart    = alone[0] & ~ready[1];
   wire [1:0] law_on_agree  = ~lock_try ? 2'b00 : both_deep ? 2'b11 :
@@ -502,14 +510,16 @@ module prenc_mode_fsm #(
   localparam [6:0] F_BOTH = LOCK_BOTH - 1;
   localparam [6:0] F_ONE  = LOCK_ONE - 1;
   localparam [6:0] F_X    = LOCK_EXTRA;
-  reg [1:0] f_ready;     // full and settled
+  reg [1:0] f_ready;     // full, steady and settled
+  reg       f_blocked;   // a full, settled track that is not steady
   reg [1:0] f_span_both;
   reg [1:0] f_span_one;
   reg [1:0] f_vote_keep;   // a reading that matches the count's hypothesis, not the other
   reg [1:0] f_vote_other;  // the mirror
   wire [1:0] f_alt = (dual ? dual_cw : illegal_cw) ? mismatch_lo_ahead : mismatch_hi_ahead;
   always @(posedge clk) begin
-    f_ready        <= full_ahead & settled_ahead;
+    f_ready        <= full_ahead & settled_ahead & steady_ahead;
+    f_blocked      <= |(full_ahead & settled_ahead & ~steady_ahead);
     f_span_both[0] <= {1'b0, span1_ahead} >= F_BOTH + ((&quiet_ahead) ? 7'd0 : F_X);
     f_span_both[1] <= {1'b0, span2_ahead} >= F_BOTH + ((&quiet_ahead) ? 7'd0 : F_X);
     f_span_one[0]  <= {1'b0, span1_ahead} >= F_ONE + (quiet_ahead[0] ? 7'd0 : F_X);
@@ -518,15 +528,16 @@ module prenc_mode_fsm #(
     f_vote_other   <= checked_ahead & mismatch_ahead & ~f_alt;
     if (rst) begin
       f_ready      <= 2'b00;
+      f_blocked    <= 1'b0;
       f_span_both  <= 2'b00;
       f_span_one   <= 2'b00;
       f_vote_keep  <= 2'b00;
       f_vote_other <= 2'b00;
     end
   end
-  wire f_both = f_ready[0] && f_ready[1] && off1 == off2 && (&f_span_both);
-  wire f_one1 = f_ready[0] && f_span_one[0] && !(f_ready[1] && off1 != off2);
-  wire f_one2 = f_ready[1] && f_span_one[1] && !(f_ready[0] && off1 != off2);
+  wire f_both = !f_blocked && f_ready[0] && f_ready[1] && off1 == off2 && (&f_span_both);
+  wire f_one1 = !f_blocked && f_ready[0] && f_span_one[0] && !(f_ready[1] && off1 != off2);
+  wire f_one2 = !f_blocked && f_ready[1] && f_span_one[1] && !(f_ready[0] && off1 != off2);
   // Two open hypotheses, as documented: the slots read since the transition form an
   // interval around its slot (the count moves one slot a clock at most); a reading
   // outside it and within DUAL_SPAN slots is a vote where the hypotheses differ.
@@ -589,11 +600,11 @@ module prenc_mode_fsm #(
   reg [1:0]   f_other_heads_prev;
   reg         f_far_prev;
   reg         f_counting_prev;
-  reg [1:0]   f_full_prev;    // the judge's view of full (registered from full_ahead)
+  reg [1:0]   f_full_prev;    // the judge's view of full and steady (from the *_ahead)
   reg [1:0]   f_lawish_prev;  // the tracks in law mode, once last clock's pulses landed
   reg [1:0]   f_full;
   always @(posedge clk) begin
-    f_full <= rst ? 2'b00 : full_ahead;
+    f_full <= rst ? 2'b00 : full_ahead & steady_ahead;
   end
   always @(posedge clk) begin
     f_far_prev         <= f_far;
@@ -682,8 +693,8 @@ module prenc_mode_fsm #(
           assert (!dual && mode == INCREMENTAL && flush == 2'b11);
         end
       end
-      // Return to normal: while valid, a track in raw mode whose full window converts
-      // to the offset rejoins (turns to law mode) on that strobe; no other track does.
+      // Return to normal: while valid, a track in raw mode whose full, steady window
+      // converts to the offset rejoins (turns to law mode) on that strobe; no other does.
       if (f_valid_prev && f_strobe_prev) begin
         assert (law_on == (f_full_prev & ~f_lawish_prev &
                            {f_off2_prev == f_offset_prev, f_off1_prev == f_offset_prev}));

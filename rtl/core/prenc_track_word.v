@@ -52,6 +52,13 @@
 //   dual, dual_cw            from the judge: two hypotheses open, the count's way
 //   span, settled, quiet     lock evidence of a raw window and of its head (from registers):
 //                            quiet = no disagreement in the last QUIET checks, or since reset
+//   steady                   the window's offset (converted slot - base) is the last
+//                            clock's too: no reading changed the word, no realignment,
+//                            flush or reset moved it (a slide or a move keeps it: the law
+//                            extends any word to the disc's next window). The judge reads
+//                            a track's offset only while steady, so that the core may
+//                            register the converter's output (CONV_REG) and give it the
+//                            last clock's offset without changing a decision.
 //   word, full, base, law, supported, strobe_q, checked, mismatch*, errors: registered
 `resetall
 `timescale 1ns / 1ps
@@ -96,7 +103,8 @@ module prenc_track_word #(
   output wire [ERROR_WIDTH-1:0] errors,
   output wire [5:0]             span,
   output wire                   settled,
-  output wire                   quiet
+  output wire                   quiet,
+  output wire                   steady
 );
 
   generate
@@ -168,6 +176,7 @@ module prenc_track_word #(
   reg                   full_reg;       // &known_reg
   reg                   raw_checked_reg;  // raw mode: a bit read or predicted was read again
   reg                   raw_changed_reg;  // ... and the reading changed it
+  reg                   steady_reg;       // the offset is the last clock's
 
   // The disc's laws on the window (datasheet; the bracket is the de Bruijn term),
   // registered with the word (fwd_bit, inv_bit): off the path from the word to the
@@ -346,6 +355,7 @@ module prenc_track_word #(
     supported_reg   <= law_next & (score_after < S_LIMIT);
     raw_checked_reg <= strobe & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
     raw_changed_reg <= changed;
+    steady_reg      <= ~(write_raw & changed) & ~(idle & (|pending_reg)) & ~flush & ~demote;
     base_reg        <= base_next;  // = slot - index_next + HEAD_OFFSET
     strobe_reg      <= strobe;
     checked_reg     <= strobe & law_reg;
@@ -378,6 +388,7 @@ module prenc_track_word #(
       full_reg        <= 1'b0;
       raw_checked_reg <= 1'b0;
       raw_changed_reg <= 1'b0;
+      steady_reg      <= 1'b0;
       strobe_reg      <= 1'b0;
       checked_reg     <= 1'b0;
       mismatch_reg    <= 1'b0;
@@ -390,6 +401,7 @@ module prenc_track_word #(
   assign addr        = word_next;
   assign word        = word_reg;
   assign full        = full_reg;
+  assign steady      = steady_reg;
   assign base        = base_reg;
   assign law         = law_reg;
   assign supported   = supported_reg;
@@ -674,6 +686,8 @@ module prenc_track_word #(
                                                                 f_woff_prev - 1'b1));
         else assert (f_woff == f_woff_prev);
       end
+      // steady: the offset is the last clock's (the judge reads a lagging one by it).
+      if (steady) assert (f_woff == f_woff_prev);
     end
   end
   always @(posedge clk) begin

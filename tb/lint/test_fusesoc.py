@@ -169,7 +169,7 @@ def test_the_cores_parameters_reach_the_toplevel(library):
     tunables = [name for name in re.findall(r"^\s+parameter\s+(?:integer\s+)?(?:\[[^]]*\]\s*)?(\w+)\s*=",
                                             header, re.M)
                 if name not in ("N", "TAPS", "SHIFT", "ROM_FILE")]  # the generator's, and SHIFT's fixed
-    assert "HYPOTHESES" in tunables and "FILTER" in tunables and len(tunables) == 11, tunables
+    assert "HYPOTHESES" in tunables and "FILTER" in tunables and len(tunables) == 12, tunables
     fusesoc(library, "run", "--build-root", "build/params", "--target", "lint", "prenc:reader:core",
             "--FILTER=3", "--HYPOTHESES=0", "--SCORE_LIMIT=16", "--COUNT_WIDTH=24")
     options = (library / "build" / "params" / "prenc_reader_core_0.1.0" / "lint-verilator"

@@ -16,10 +16,14 @@ comparisons, and each illegal quadrature transition:
   (docs/architecture.md). Both tracks full and settled on one offset with spans >= LOCK_BOTH - 1
   (N + LOCK_BOTH - 1 slots each), or one track with span >= LOCK_ONE - 1 while
   the other is not settled on another offset, lock:
-  that offset, and those tracks turn to law mode.
+  that offset, and those tracks turn to law mode. A track's offset counts only
+  while it is steady (the same as on the clock before: no reading changed its
+  word, no realignment or flush moved it), and a full, settled track that is not
+  steady blocks any lock on that clock: so the RTL may give the judge the offsets
+  of the clock before (prenc_core's CONV_REG) without changing a decision.
 - locked: the mode follows which law-mode tracks still support the offset
-  (NORMAL both, REDUCED_1 / REDUCED_2 one); a raw track whose window converts to
-  the offset rejoins. No track left: the offset is dropped (INCREMENTAL).
+  (NORMAL both, REDUCED_1 / REDUCED_2 one); a raw track whose steady window
+  converts to the offset rejoins. No track left: the offset is dropped (INCREMENTAL).
 - an illegal transition while locked with both tracks supporting: the count took
   the step the last direction makes likely; the other hypothesis is one slot the
   other way. Both stay open (`dual`, pos_valid 0). A reading at a slot not yet
@@ -73,6 +77,7 @@ class JudgeInput:
     illegal_cw: int = 0
     slot: int = 0
     full: tuple = (0, 0)
+    steady: tuple = (0, 0)
     off: tuple = (0, 0)
     span: tuple = (0, 0)
     settled: tuple = (0, 0)
@@ -86,7 +91,8 @@ class JudgeInput:
     def of_tracks(cls, tracks, off: tuple, illegal: int, illegal_cw: int, slot: int) -> "JudgeInput":
         """The J1 registers from both tracks' registered outputs and their offsets."""
         return cls(strobe=tracks[0].strobe, illegal=illegal, illegal_cw=illegal_cw, slot=slot,
-                   full=tuple(t.full for t in tracks), off=tuple(off), span=tuple(t.span for t in tracks),
+                   full=tuple(t.full for t in tracks), steady=tuple(t.steady for t in tracks), off=tuple(off),
+                   span=tuple(t.span for t in tracks),
                    settled=tuple(t.settled for t in tracks), quiet=tuple(t.is_quiet for t in tracks),
                    checked=tuple(t.checked for t in tracks), mismatch=tuple(t.mismatch for t in tracks),
                    mismatch_lo=tuple(t.mismatch_lo for t in tracks),
@@ -143,10 +149,15 @@ class ModeFsm:
             elif locked:
                 drop = True
         elif j.strobe and not locked:
-            ready = [j.full[h] and j.settled[h] for h in (0, 1)]
+            # A track's offset counts only while steady (the same word's on the last clock
+            # too); a settled track whose word just changed blocks any lock on this clock.
+            ready = [j.full[h] and j.settled[h] and j.steady[h] for h in (0, 1)]
+            blocked = any(j.full[h] and j.settled[h] and not j.steady[h] for h in (0, 1))
             both_extra = 0 if (j.quiet[0] and j.quiet[1]) else self.lock_extra
             one_extra = [0 if j.quiet[h] else self.lock_extra for h in (0, 1)]
-            if (ready[0] and ready[1] and j.off[0] == j.off[1]
+            if blocked:
+                pass
+            elif (ready[0] and ready[1] and j.off[0] == j.off[1]
                     and min(j.span) >= self.lock_both - 1 + both_extra):
                 offset, law_on, mode, locked_now = j.off[0], [1, 1], Mode.NORMAL, True
             # One head alone, unless the other is settled on another offset: two
@@ -159,7 +170,7 @@ class ModeFsm:
                 offset, law_on, mode, locked_now = j.off[1], [0, 1], Mode.REDUCED_2, True
         elif j.strobe and not dual:
             for h in (0, 1):
-                if j.full[h] and not lawish[h] and j.off[h] == offset:
+                if j.full[h] and j.steady[h] and not lawish[h] and j.off[h] == offset:
                     law_on[h] = 1
         elif j.strobe:
             rel = (j.slot - anchor) & self.mask

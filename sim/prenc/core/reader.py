@@ -15,7 +15,10 @@ The stages, each the model of one RTL module, registered as in the RTL:
 
 The sampler and the position take the decoder's step on the decoder's own edge (its
 next values, as prenc_quadrature's *_next outputs give them to the RTL's).
-`clock_decoded` enters there, for the fault campaign.
+`clock_decoded` enters there, for the fault campaign. The judge gets each track's offset
+of this clock (prenc_core with CONV_REG = 0), or with `conv_reg` the clock before's
+(CONV_REG = 1), and decides the same either way: it reads an offset only while the
+track is steady (the same offset as on the clock before).
 Latency: outputs show the pins LATENCY + FILTER clocks earlier.
 """
 
@@ -68,7 +71,7 @@ class Reader:
     def __init__(self, code: Code, filter_len: int = 0, lock_both: int | None = None,
                  lock_one: int | None = None, dual_votes: int = DUAL_VOTES,
                  dual_span: int = DUAL_SPAN, score_up: int = SCORE_UP, score_limit: int = SCORE_LIMIT,
-                 hypotheses: bool = True):
+                 hypotheses: bool = True, conv_reg: bool = False):
         self.code = code
         self.n = code.n
         self.mask = code.mask
@@ -83,6 +86,8 @@ class Reader:
         self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max),
                        TrackWord(code, code.n - 1, score_up, score_limit, ext_max)]
         self.j1 = JudgeInput()
+        self.conv_reg = conv_reg  # CONV_REG = 1: the judge gets the offsets of the clock before
+        self.off_before = [0, 0]
         self.t_illegal = self.t_illegal_cw = 0
         self.clean = [0, 0, 0, 1]
         self.strobes = 0
@@ -97,9 +102,11 @@ class Reader:
         decoder registers at this edge, `heads` the heads of the same input sample."""
         tracks, pos, s = self.tracks, self.position, self.sampler.out
         self.fsm.clock(self.j1, tuple(t.supported for t in tracks), tuple(t.law for t in tracks), rst=rst)
-        self.j1 = JudgeInput.of_tracks(
-            tracks, [(self.code.position(t.word) - t.base) & self.mask for t in tracks],
-            self.t_illegal, self.t_illegal_cw, (tracks[0].base + tracks[0].index) & self.mask)
+        off = [(self.code.position(t.word) - t.base) & self.mask for t in tracks]
+        if self.conv_reg:
+            off, self.off_before = self.off_before, off
+        self.j1 = JudgeInput.of_tracks(tracks, off, self.t_illegal, self.t_illegal_cw,
+                                       (tracks[0].base + tracks[0].index) & self.mask)
         if rst:
             self.j1 = JudgeInput()
         flush, law_on, realign, dual, dual_cw = self._ctrl

@@ -94,6 +94,8 @@ class TrackWord:
         self.law = 0
         self.base = 0           # slot count - index + head_offset (mod 2^N)
         self.full = 0
+        self.steady = 0         # the window's offset (its disc slot - base) is the last clock's: no
+                                # reading changed the word, no realignment or flush moved it
         self.strobe = 0         # a strobe was handled on the last clock
         self.checked = 0        # ... in law mode: compared with the window
         self.mismatch = 0       # ... and disagreed
@@ -138,9 +140,10 @@ class TrackWord:
         this one."""
         n, word, known, index, law = self.n, self.word, self.known, self.index, self.law
         pending = self.realign  # the judge's pulse waits a clock in the register
+        moved_off = 0  # a realignment moves the window against the count: the offset moves
         if pending and not (ev.up or ev.down or ev.strobe):
             ev = TrackEvent(up=int(pending > 0), down=int(pending < 0), illegal=ev.illegal)
-            pending = 0
+            pending, moved_off = 0, 1
         pending = pending or realign
         score, quiet = health_after_check(self, dual, dual_cw)
         demote = law and self.score >= self.score_limit  # from the register: a clock after the limit
@@ -180,6 +183,7 @@ class TrackWord:
                 changed = ev.head != self.bit(word, index)
                 if changed:
                     ext_lo = ext_hi = 0  # a new word: the readings outside agreed with the old one
+                    moved_off = 1
                 # The bit was read or predicted: a check of the head, scored next clock
                 # (a lock turning the track to law mode now starts it afresh).
                 raw_checked, raw_changed = int(self.primed and not law_on), int(changed)
@@ -197,6 +201,7 @@ class TrackWord:
             law, score = 1, 0
         if flush or demote:  # the score stays: it is the head's record, not the window's
             known, index, law, pending, ext_lo, ext_hi, primed = 0, 0, 0, 0, 0, 0, 0
+            moved_off = 1
         if rst:
             known, index, law, score, errors, pending, ext_lo, ext_hi, primed = 0, 0, 0, 0, 0, 0, 0, 0, 0
             mismatch = mismatch_lo = mismatch_hi = 0
@@ -210,5 +215,8 @@ class TrackWord:
         self.word, self.known, self.index, self.law = word, known, index, law
         self.score, self.errors = score, errors
         self.ext_lo, self.ext_hi, self.primed, self.quiet = ext_lo, ext_hi, primed, quiet
+        # A slide or a move keeps the offset: the law extends any word to the next
+        # window of the disc, and the base follows the count.
+        self.steady = int(not moved_off and not rst)
         self.full = int(known == self.mask)
         self.base = (slot - index + self.head_offset) & self.mask

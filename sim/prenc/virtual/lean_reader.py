@@ -46,6 +46,8 @@ from ..core.track_word import SCORE_LIMIT, SCORE_UP, default_quiet, health_after
 class LeanTrack:
     """One head: a shift register of readings while acquiring, the disc's bits when locked."""
 
+    steady = 1  # the judge reads this track's offset as it is now: nothing to wait for
+
     def __init__(self, code: Code, head_offset: int, ext_max: int, score_up: int = SCORE_UP,
                  score_limit: int = SCORE_LIMIT):
         self.code, self.n, self.mask, self.length = code, code.n, code.mask, code.length

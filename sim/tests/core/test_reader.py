@@ -155,3 +155,55 @@ def test_campaign_small_is_never_wrong():
     r = campaign(6, 20_000, 5_000, seed=3)
     assert r.wrong_valid == 0
     assert r.availability > 0.5
+
+
+def test_steady_means_the_offset_did_not_move():
+    """A track word under random events (readings right and wrong, moves, reversals,
+    realignments, flushes, illegal transitions): whenever it says steady, its offset
+    (converted slot - base) is the last clock's; a reading that changes the word, a
+    realignment that moves the window and a flush are never steady."""
+    code = Code(8)
+    rng = np.random.default_rng(5)
+    seq = [int(b) for b in code.sequence]
+    for head_offset in (0, code.n - 1):
+        t = TrackWord(code, head_offset)
+        slot, steady_seen, moved_seen = 40, 0, 0
+        off_before = None
+        for k in range(20_000):
+            kind = rng.choice(["strobe", "up", "down", "idle", "flush", "realign", "illegal"],
+                              p=[0.45, 0.2, 0.2, 0.08, 0.01, 0.04, 0.02])
+            ev, flush, realign = TrackEvent(), 0, 0
+            if kind == "up":
+                slot = (slot + 1) & code.mask
+                ev = TrackEvent(up=1)
+            elif kind == "down":
+                slot = (slot - 1) & code.mask
+                ev = TrackEvent(down=1)
+            elif kind == "strobe":
+                bit = seq[(slot + 17 + head_offset) & code.mask] ^ int(rng.random() < 0.05)
+                ev = TrackEvent(strobe=1, head=bit)
+            elif kind == "illegal":
+                ev = TrackEvent(illegal=1)
+            flush = int(kind == "flush")
+            realign = int(rng.choice([1, -1])) if kind == "realign" else 0
+            t.clock(ev, slot, flush=flush, realign=realign, rst=int(k < 2))
+            off = (code.position(t.word) - t.base) & code.mask
+            if t.steady:
+                assert off == off_before, f"clock {k}: steady, but the offset moved {off_before} -> {off}"
+                steady_seen += 1
+            moved_seen += off != off_before
+            off_before = off
+        assert steady_seen > 10_000 and moved_seen > 100
+
+
+@pytest.mark.parametrize("n,filter_len", [(10, 0), (6, 2)])
+def test_offsets_of_the_clock_before_give_the_same_outputs(n, filter_len):
+    """CONV_REG = 1 in the model: the judge gets each track's offset a clock late and,
+    reading it only while steady, decides the same on every scenario and goal."""
+    runs = [s.run(n) for s in scenarios(n, filter_len).values()]
+    if n == 10:
+        runs += [g.run(n) for g in goals(n)]
+    for enc in runs:
+        now = Reader(Code(n), filter_len=filter_len).run(enc)
+        late = Reader(Code(n), filter_len=filter_len, conv_reg=True).run(enc)
+        assert now == late
