@@ -77,11 +77,11 @@ def test_the_whole_core_with_its_rom_is_proven_equal_to_itself():
 @pytest.mark.synth
 def test_a_core_that_adds_the_window_base_is_not():
     text = core_source()
-    assert "conv1 - base1" in text
+    assert "conv1_j - base1_j" in text
     out = SIM_BUILD / "equiv" / "core-mutant"
     out.mkdir(parents=True, exist_ok=True)
     source = out / "prenc_core_edit.v"
-    source.write_text(text.replace("conv1 - base1", "conv1 + base1", 1))
+    source.write_text(text.replace("conv1_j - base1_j", "conv1_j + base1_j", 1))
     proven, summary = equiv.check("prenc_core", "HEAD", source, {}, 2, out, whole=True)
     assert not proven
     assert "off1_j_reg" in summary and "NOT proven" in summary
