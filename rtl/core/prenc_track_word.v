@@ -14,7 +14,7 @@
 //             law's extension of the window (a slide over a known bit keeps it there,
 //             a slide back takes it as known, a reading that changes the word empties
 //             both), so a re-read after a reversal adds nothing. `span` = ext_lo +
-//             ext_hi (saturating at 63) of a full raw window. The health score
+//             ext_hi (saturating at EXT_MAX) of a full raw window. The health score
 //             also counts raw disagreements (a reading that changes a window full
 //             since the last flush), registered and scored on the next clock as the
 //             law-mode comparisons are; `settled` (score 0) lets the head take part in a
@@ -38,7 +38,7 @@
 //   SCORE_UP     score added by a mismatch, 1..15
 //   SCORE_LIMIT  score at which the track stops supporting, SCORE_UP..255
 //   ERROR_WIDTH  mismatch counter width, 1..32 (saturates)
-//   EXT_MAX      the evidence counters' saturation, 1..63 (the deepest lock's need)
+//   EXT_MAX      span saturation, 1..63 (the deepest lock's need)
 //   QUIET        agreeing checks after which a head is quiet, 1..63 (default 4N)
 //
 // Ports
@@ -411,19 +411,14 @@ module prenc_track_word #(
   assign mismatch_lo = mismatch_lo_reg;
   assign mismatch_hi = mismatch_hi_reg;
   assign errors      = errors_reg;
-  // span saturates at the port's 63, not at EXT_MAX: every lock depth the judge compares
-  // it with is at most EXT_MAX, so the comparisons are the same, and below EXT_MAX = 32
-  // (the default is 14) the sum needs no saturation at all (two LUT levels less on the
-  // path into the judge's span comparisons).
-  wire [EW:0] ext_sum = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
-  wire [EW:0] span_w  = (~full_reg | law_reg) ? {(EW + 1){1'b0}} : ext_sum;
+  wire [EW:0]   ext_sum  = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
+  wire [EW-1:0] span_w   = (~full_reg | law_reg) ? {EW{1'b0}} :
+                           (ext_sum > {1'b0, E_MAX}) ? E_MAX : ext_sum[EW-1:0];
   generate
-    if (EW < 5) begin : g_span_narrow
-      assign span = {{(5 - EW){1'b0}}, span_w};
-    end else if (EW == 5) begin : g_span_six
-      assign span = span_w;
+    if (EW < 6) begin : g_span_narrow
+      assign span = {{(6 - EW){1'b0}}, span_w};
     end else begin : g_span_full
-      assign span = span_w[6] ? 6'd63 : span_w[5:0];
+      assign span = span_w;
     end
   endgenerate
   assign settled     = (score_reg == {SW{1'b0}});
@@ -605,7 +600,7 @@ module prenc_track_word #(
       assert (settled == (score_reg == {SW{1'b0}}) && quiet == (quiet_reg == Q_MAX));
       assert (score_reg <= S_LIMIT && quiet_reg <= Q_MAX);
       assert (span == ((full_reg && !law_reg) ?
-                       ((f_span_sum > 7'd63) ? 6'd63 : f_span_sum[5:0]) : 6'd0));
+                       ((f_span_sum > {1'b0, E_MAX}) ? E_MAX : f_span_sum[5:0]) : 6'd0));
       if (f_rst_prev) assert (errors_reg == {ERROR_WIDTH{1'b0}} && score_reg == {SW{1'b0}} &&
                               quiet_reg == Q_MAX && !law_reg && known_reg == {N{1'b0}});
     end

@@ -18,7 +18,7 @@ disc's bits keeps holding them.
   window sliding back over such a slot takes its bit as known; a reading that
   changes the word empties `ext` (those readings agreed with the old word). A
   re-read after a reversal therefore adds nothing: dithering over a dirty slot
-  cannot build a lock. `span` = ext_lo + ext_hi (up to 63) once the window is full:
+  cannot build a lock. `span` = ext_lo + ext_hi (saturating) once the window is full:
   the window holds the disc word of N + span consecutive readings.
 - law mode (locked): the window is the disc's word, stepped by the law; a strobe
   only compares the reading with the bit at the index (`mismatch`), and with the
@@ -116,9 +116,7 @@ class TrackWord:
         """Consistent readings beyond the N of a full raw window (0 otherwise)."""
         if not self.full or self.law:
             return 0
-        # At most 63 (the RTL port's width), not ext_max: every lock depth is at most
-        # ext_max, so the judge's comparisons are the same.
-        return min(self.ext_lo + self.ext_hi, 63)
+        return min(self.ext_lo + self.ext_hi, self.ext_max)
 
     @property
     def settled(self) -> int:
