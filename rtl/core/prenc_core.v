@@ -373,27 +373,14 @@ module prenc_core #(
   wire [N-1:0] conv2_j;
   wire [N-1:0] base1_j;
   wire [N-1:0] base2_j;
+  wire [4*N-1:0] conv_now = {conv1, conv2, base1, base2};
   generate
     if (CONV_REG == 1) begin : g_conv_reg
-      reg [N-1:0] conv1_reg;
-      reg [N-1:0] conv2_reg;
-      reg [N-1:0] base1_reg;
-      reg [N-1:0] base2_reg;
-      always @(posedge clk) begin
-        conv1_reg <= conv1;
-        conv2_reg <= conv2;
-        base1_reg <= base1;
-        base2_reg <= base2;
-      end
-      assign conv1_j = conv1_reg;
-      assign conv2_j = conv2_reg;
-      assign base1_j = base1_reg;
-      assign base2_j = base2_reg;
+      reg [4*N-1:0] conv_reg;
+      always @(posedge clk) conv_reg <= conv_now;
+      assign {conv1_j, conv2_j, base1_j, base2_j} = conv_reg;
     end else begin : g_conv_direct
-      assign conv1_j = conv1;
-      assign conv2_j = conv2;
-      assign base1_j = base1;
-      assign base2_j = base2;
+      assign {conv1_j, conv2_j, base1_j, base2_j} = conv_now;
     end
   endgenerate
 
