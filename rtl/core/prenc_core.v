@@ -140,7 +140,7 @@ module prenc_core #(
   // Quadrature: quarter, steps, illegal transitions, the incremental count. The
   // sampler and the position take the decoded step on the decoder's own edge (its
   // *_next outputs): one clock of latency less than behind its registers.
-  wire [1:0] quarter;  // the registered step: not used, but `direction`
+  wire [1:0] quarter;  // the decoder's registered outputs: only step_cw is used (direction)
   wire       step;
   wire       step_cw;
   wire       illegal;

@@ -32,9 +32,8 @@
 //   count          CW steps minus CCW steps since reset (two's complement, wraps)
 //   quarter_next, step_next, step_cw_next, illegal_next
 //                  what quarter, step, step_cw and illegal take at this edge (out of
-//                  reset), for a
-//                  stage that registers the decoded step itself (prenc_core's sampler
-//                  and position): the core saves a clock of latency with them
+//                  reset), for a stage that registers the decoded step itself
+//                  (prenc_core's sampler and position): a clock of latency less
 
 `resetall
 `timescale 1ns / 1ps

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """`make equiv` (scripts/equiv.py) proves a behaviour-preserving rewrite and rejects a
 changed circuit: the quadrature decoder at HEAD against HEAD's own text rewritten two
-ways. Only HEAD's files are used, so the test does not depend on the working tree.
+ways, and the whole core (`--whole`, with its ROM) against itself and a mutant. Only
+HEAD's files are used, so the test does not depend on the working tree.
 """
 
 from __future__ import annotations
@@ -20,17 +21,18 @@ MODULE = "prenc_quadrature"
 STEP = "count_reg + {{(COUNT_WIDTH - 1){delta[1]}}, 1'b1}"  # one adder: +1 or -1
 
 
-def head_source() -> str:
-    return subprocess.run(["git", "show", f"HEAD:rtl/core/{MODULE}.v"], cwd=REPO, check=True,
+def head_source(module: str = MODULE) -> str:
+    return subprocess.run(["git", "show", f"HEAD:rtl/core/{module}.v"], cwd=REPO, check=True,
                           capture_output=True, text=True).stdout
 
 
-def run(tmp_name: str, text: str) -> tuple[bool, str]:
+def run(tmp_name: str, text: str, module: str = MODULE, depth: int = 3,
+        whole: bool = False) -> tuple[bool, str]:
     out = SIM_BUILD / "equiv" / tmp_name
     out.mkdir(parents=True, exist_ok=True)
-    source = out / f"{MODULE}_edit.v"
+    source = out / f"{module}_edit.v"
     source.write_text(text)
-    return equiv.check(MODULE, "HEAD", source, {}, 3, out)
+    return equiv.check(module, "HEAD", source, {}, depth, out, whole=whole)
 
 
 @pytest.mark.synth
@@ -56,32 +58,20 @@ def test_a_changed_port_list_is_an_error():
         run("ports", text)
 
 
-def core_source() -> str:
-    return subprocess.run(["git", "show", "HEAD:rtl/core/prenc_core.v"], cwd=REPO, check=True,
-                          capture_output=True, text=True).stdout
-
-
 @pytest.mark.synth
 def test_the_whole_core_with_its_rom_is_proven_equal_to_itself():
     """prenc_core reads its ROM at elaboration: equiv.py writes the default disc's table
     and compares the whole hierarchy, the submodules too taken at the base revision."""
-    out = SIM_BUILD / "equiv" / "core-same"
-    out.mkdir(parents=True, exist_ok=True)
-    source = out / "prenc_core_edit.v"
-    source.write_text(core_source())
-    proven, summary = equiv.check("prenc_core", "HEAD", source, {}, 2, out, whole=True)
+    proven, summary = run("core-same", head_source("prenc_core"), "prenc_core", 2, whole=True)
     assert proven, summary
-    assert (out / "prenc_rom_n10.hex").is_file()
+    assert (SIM_BUILD / "equiv" / "core-same" / "prenc_rom_n10.hex").is_file()
 
 
 @pytest.mark.synth
 def test_a_core_that_adds_the_window_base_is_not():
-    text = core_source()
+    text = head_source("prenc_core")
     assert "conv1_j - base1_j" in text
-    out = SIM_BUILD / "equiv" / "core-mutant"
-    out.mkdir(parents=True, exist_ok=True)
-    source = out / "prenc_core_edit.v"
-    source.write_text(text.replace("conv1_j - base1_j", "conv1_j + base1_j", 1))
-    proven, summary = equiv.check("prenc_core", "HEAD", source, {}, 2, out, whole=True)
+    proven, summary = run("core-mutant", text.replace("conv1_j - base1_j", "conv1_j + base1_j", 1),
+                          "prenc_core", 2, whole=True)
     assert not proven
     assert "off1_j_reg" in summary and "NOT proven" in summary
