@@ -199,7 +199,8 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
         except synth.FlowError as err:
             rows.append((what, 10, f"FAILED: {err}"))
     # prenc_wb at the boards' design clocks (the UP5K through the few-pin harness).
-    for target, top, aim in (("ice40-up5k", "prenc_wb_harness", 24.0), ("ecp5-25k", "prenc_wb", 50.0)):
+    for target, top, board in (("ice40-up5k", "prenc_wb_harness", "icebreaker"), ("ecp5-25k", "prenc_wb", "ulx3s")):
+        aim = synth.BOARDS[board].clock_mhz
         out = SIM_BUILD / "bench" / "synth" / f"{top}-{target}-n10"
         what = f"{top}, {synth.TARGETS[target].name}"
         try:

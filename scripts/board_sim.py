@@ -4,7 +4,7 @@
 
     python scripts/board_sim.py [--profile constant|reversals|sine] [--rpm 600]
                                 [--misreads 0.01] [--dead-head 2] [--missed-states 3]
-                                [--seconds 0] [--clock-mhz 24 --baud 3000000]
+                                [--seconds 0] [--clock-mhz 30 --baud 3000000]
 
 prenc_board runs on Verilator (tb/board/prenc_board/virtual_board.py), driven by the
 virtual encoder; its UART is a pseudo-terminal whose name this prints. In another
@@ -17,7 +17,7 @@ terminal:
 
 The simulation is some hundred times slower than the board (it prints how much), so
 board time runs slow: ask for streams at a high rate (--rate 1000 is one answer per
-millisecond of board time). A lower clock (--clock-mhz 4 --baud 1000000) runs six
+millisecond of board time). A lower clock (--clock-mhz 4 --baud 1000000) runs seven
 times closer to real time. Stop it with Ctrl-C, or give --seconds of board time.
 """
 
@@ -47,7 +47,7 @@ def parse(argv=None) -> argparse.Namespace:
                    help="missed quadrature states per 200,000 clocks of encoder signal")
     p.add_argument("--seed", type=int, default=1, help="seed of the random faults (default 1)")
     p.add_argument("--seconds", type=float, default=0.0, help="board time to run (default 0: until stopped)")
-    p.add_argument("--clock-mhz", type=int, default=24, help="design clock in MHz (default 24, the iCEBreaker's)")
+    p.add_argument("--clock-mhz", type=int, default=30, help="design clock in MHz (default 30, the iCEBreaker's)")
     p.add_argument("--baud", type=int, default=3_000_000, help="UART baud rate (default 3000000)")
     p.add_argument("--filter", type=int, default=2, help="glitch filter length in clocks (default 2)")
     p.add_argument("--port-file", help="write the pty's name to this file")

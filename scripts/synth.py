@@ -85,7 +85,7 @@ class Board:
 
 
 BOARDS = {
-    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 24.0),
+    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 30.0),
     "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 50.0),
 }
 

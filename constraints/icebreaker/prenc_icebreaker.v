@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
-//   12 MHz (pin 35) -> SB_PLL40_PAD -> 24 MHz system clock: 3 Mbaud is 8 clocks per bit,
-//   1 Mbaud 24, 115200 baud 208 (0.2 % fast). The UP5K closes this top at about 31 MHz.
+//   12 MHz (pin 35) -> SB_PLL40_PAD -> 30 MHz system clock: 3 Mbaud is 10 clocks per bit,
+//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at 32 to 33 MHz
+//   (placer seeds 1 to 5).
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
@@ -48,16 +49,16 @@ module prenc_icebreaker #(
   output wire LED5
 );
 
-  localparam integer CLK_HZ = 24000000;
+  localparam integer CLK_HZ = 30000000;
 
   wire clk;
   wire locked;
 
-  // 12 MHz x 64 / 2^5 = 24 MHz (yowasp-icepll -i 12 -o 24): VCO 768 MHz.
+  // 12 MHz x 80 / 2^5 = 30 MHz (yowasp-icepll -i 12 -o 30): VCO 960 MHz.
   SB_PLL40_PAD #(
     .FEEDBACK_PATH ("SIMPLE"),
     .DIVR          (4'b0000),
-    .DIVF          (7'b0111111),
+    .DIVF          (7'b1001111),
     .DIVQ          (3'b101),
     .FILTER_RANGE  (3'b001)
   ) u_pll (

@@ -33,13 +33,13 @@ def test_board_builds_and_meets_timing(board):
     assert "Fmax" in (out / "report.md").read_text()
 
 
-@pytest.mark.parametrize("target,top,clock_mhz", [("ice40-up5k", "prenc_wb_harness", 24.0),
-                                                  ("ecp5-25k", "prenc_wb", 50.0)])
-def test_the_wishbone_core_meets_the_boards_clocks(target, top, clock_mhz):
-    """prenc_wb at the design clock of the board of its family (iCEBreaker 24 MHz, ULX3S
+@pytest.mark.parametrize("target,top,board", [("ice40-up5k", "prenc_wb_harness", "icebreaker"),
+                                              ("ecp5-25k", "prenc_wb", "ulx3s")])
+def test_the_wishbone_core_meets_the_boards_clocks(target, top, board):
+    """prenc_wb at the design clock of the board of its family (iCEBreaker 30 MHz, ULX3S
     50 MHz); on the 48-pin UP5K through the harness that gives it one pin out."""
     out = SIM_BUILD / "boards" / f"{top}-{target}"
-    result = synth.core_build(target, 10, clock_mhz, out, top=top)
+    result = synth.core_build(target, 10, synth.BOARDS[board].clock_mhz, out, top=top)
     assert result.timing_met
     assert result.used(synth.TARGETS[target].brams)[0] >= 1, "the ROM must be in block RAM"
 
@@ -47,9 +47,10 @@ def test_the_wishbone_core_meets_the_boards_clocks(target, top, clock_mhz):
 def test_the_core_places_on_the_up5k_in_its_few_pin_harness():
     """The UP5K's figure for the core (make bench): its 48 pins are fewer than the core's
     ports, so the core goes in prenc_core_harness, which must place, route and meet the
-    iCEBreaker's 24 MHz with both ROMs in block RAM."""
+    iCEBreaker's 30 MHz with both ROMs in block RAM."""
     out = SIM_BUILD / "boards" / "core_harness-ice40-up5k"
-    result = synth.core_build("ice40-up5k", 10, 24.0, out, top="prenc_core_harness")
+    result = synth.core_build("ice40-up5k", 10, synth.BOARDS["icebreaker"].clock_mhz, out,
+                              top="prenc_core_harness")
     assert result.timing_met
     assert result.used(synth.TARGETS["ice40-up5k"].brams)[0] == 6, "two converters, 3 block RAMs each"
 

@@ -4,8 +4,8 @@
 The disc (N = 6, 64 slots) rests, turns 3.5 times CW, then 6 times CCW, so the
 multi-turn count goes up across the zero crossing and down below turn 0; head 2
 sticks at 0 for the last four turns, which puts the core in a reduced mode (nW). A master
-(prenc.board.biss, written from the protocol) reads frame after frame at 4 MHz and 1 MHz
-(6 and 24 clocks of the 24 MHz design clock). Every frame must carry, with a good
+(prenc.board.biss, written from the protocol) reads frame after frame at 5 MHz and 1 MHz
+(6 and 30 clocks of the iCEBreaker's 30 MHz design clock). Every frame must carry, with a good
 CRC, what the board had on the clock before its latch (the frame's first falling
 edge): turns, pos_hyb, nE = pos_valid, nW = not a reduced mode. Every valid frame
 must also match the truth of the virtual encoder: the position within the core's
@@ -29,7 +29,7 @@ from prenc.virtual.scenarios import core_latency
 from runner import rom_file, run
 
 TOPLEVEL = "prenc_board"
-N, FILTER, CLK_HZ = 6, 2, 24_000_000
+N, FILTER, CLK_HZ = 6, 2, 30_000_000  # the iCEBreaker's design clock
 MT_BITS, ST_BITS = 12, N + 2
 TURN = 1 << N
 SLOT_CLOCKS = 24
@@ -37,7 +37,7 @@ START_CLOCK = 1_000
 THETA0 = 10.4
 CW_CLOCKS = int(3.5 * TURN * SLOT_CLOCKS)
 CCW_CLOCKS = 6 * TURN * SLOT_CLOCKS
-RATES_HZ = (4_000_000, 1_000_000)
+RATES_HZ = (5_000_000, 1_000_000)
 
 
 def theta_at(clocks: np.ndarray) -> np.ndarray:

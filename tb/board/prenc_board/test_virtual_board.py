@@ -24,7 +24,7 @@ from prenc.virtual.profiles import profile
 from prenc.virtual.scenarios import core_latency
 from runner import REPO, SIM_BUILD
 
-N, CLK_MHZ, FILTER, RPM = 10, 24, 2, 600
+N, CLK_MHZ, FILTER, RPM = 10, 30, 2, 600  # the board's defaults (the iCEBreaker's clock)
 RESET_CLOCKS = 6.5  # the virtual board holds reset 6 clocks; time_us starts after it
 
 
@@ -48,8 +48,8 @@ def truth(record: dict) -> set[int]:
 def test_prenc_host_reads_the_virtual_board():
     port_file = SIM_BUILD / "virtual_board.port"
     port_file.unlink(missing_ok=True)
-    cmd = [sys.executable, str(REPO / "scripts" / "board_sim.py"), "--rpm", str(RPM), "--seconds", "0",
-           "--port-file", str(port_file)]
+    cmd = [sys.executable, str(REPO / "scripts" / "board_sim.py"), "--clock-mhz", str(CLK_MHZ), "--rpm", str(RPM),
+           "--seconds", "0", "--port-file", str(port_file)]
     log = (SIM_BUILD / "virtual_board.log").open("w")
     sim = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
     try:
