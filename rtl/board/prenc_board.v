@@ -19,6 +19,9 @@
 //   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
 //                 period of the slowest MA). MA up to CLK_HZ / 5 (docs/biss-c.md)
+//   LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
+//   SCORE_LIMIT, CONV_REG   the core's decision and build options, passed to it as
+//                 they are (prenc_core's header: ranges and defaults; checked there)
 //
 // Ports
 //   clk, rst                       one clock; synchronous active-high reset (>= 4 clocks)
@@ -46,7 +49,16 @@ module prenc_board #(
   parameter integer SSI_MONOFLOP_US = 20,
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_HYBRID     = 1,
-  parameter integer BISS_TIMEOUT_US = 20
+  parameter integer BISS_TIMEOUT_US = 20,
+  parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
+  parameter integer LOCK_ONE        = (N < 8) ? N + 5 : N + 2,
+  parameter integer LOCK_EXTRA      = 3,
+  parameter integer DUAL_VOTES      = 3,
+  parameter integer DUAL_SPAN       = 12,
+  parameter integer HYPOTHESES      = 1,
+  parameter integer SCORE_UP        = 4,
+  parameter integer SCORE_LIMIT     = 12,
+  parameter integer CONV_REG        = 0
 ) (
   input  wire       clk,
   input  wire       rst,
@@ -122,7 +134,16 @@ module prenc_board #(
     .FILTER      (FILTER),
     .ROM_FILE    (ROM_FILE),
     .COUNT_WIDTH (32),
-    .ERROR_WIDTH (16)
+    .ERROR_WIDTH (16),
+    .LOCK_BOTH   (LOCK_BOTH),
+    .LOCK_ONE    (LOCK_ONE),
+    .LOCK_EXTRA  (LOCK_EXTRA),
+    .DUAL_VOTES  (DUAL_VOTES),
+    .DUAL_SPAN   (DUAL_SPAN),
+    .HYPOTHESES  (HYPOTHESES),
+    .SCORE_UP    (SCORE_UP),
+    .SCORE_LIMIT (SCORE_LIMIT),
+    .CONV_REG    (CONV_REG)
   ) u_core (
     .clk           (clk),
     .rst           (rst),

@@ -25,18 +25,29 @@
 // Interrupt: IRQ_STATUS.lost_valid is set when pos_valid falls, .mode_change when mode
 // changes (an event beats a clear on the same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
 //
-// Parameters: those of prenc_core (N, TAPS, FILTER, ROM_FILE; the counters are 32-bit
-// and 16-bit, as the map), checked there; N <= 24 fits the map's fields.
+// Parameters: those of prenc_core (N, TAPS, FILTER, ROM_FILE, and its decision and build
+// options LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
+// SCORE_LIMIT, CONV_REG, passed to it as they are; the counters are 32-bit and 16-bit,
+// as the map), checked there; N <= 24 fits the map's fields.
 
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
 
 module prenc_wb #(
-  parameter integer N        = 10,
-  parameter [31:0]  TAPS     = 32'h0000_0204,
-  parameter integer FILTER   = 2,
-  parameter         ROM_FILE = "prenc_rom_n10.hex"
+  parameter integer N           = 10,
+  parameter [31:0]  TAPS        = 32'h0000_0204,
+  parameter integer FILTER      = 2,
+  parameter         ROM_FILE    = "prenc_rom_n10.hex",
+  parameter integer LOCK_BOTH   = (N < 8) ? 3 : 2,
+  parameter integer LOCK_ONE    = (N < 8) ? N + 5 : N + 2,
+  parameter integer LOCK_EXTRA  = 3,
+  parameter integer DUAL_VOTES  = 3,
+  parameter integer DUAL_SPAN   = 12,
+  parameter integer HYPOTHESES  = 1,
+  parameter integer SCORE_UP    = 4,
+  parameter integer SCORE_LIMIT = 12,
+  parameter integer CONV_REG    = 0
 ) (
   input  wire         clk,
   input  wire         rst,
@@ -126,7 +137,16 @@ module prenc_wb #(
     .FILTER      (FILTER),
     .ROM_FILE    (ROM_FILE),
     .COUNT_WIDTH (32),
-    .ERROR_WIDTH (16)
+    .ERROR_WIDTH (16),
+    .LOCK_BOTH   (LOCK_BOTH),
+    .LOCK_ONE    (LOCK_ONE),
+    .LOCK_EXTRA  (LOCK_EXTRA),
+    .DUAL_VOTES  (DUAL_VOTES),
+    .DUAL_SPAN   (DUAL_SPAN),
+    .HYPOTHESES  (HYPOTHESES),
+    .SCORE_UP    (SCORE_UP),
+    .SCORE_LIMIT (SCORE_LIMIT),
+    .CONV_REG    (CONV_REG)
   ) u_core (
     .clk           (clk),
     .rst           (rst),

@@ -85,18 +85,32 @@ def test_a_clock_that_is_not_met_fails_the_build():
                     {"WIDTH": 32}, 400.0, out, bitstream=False)
 
 
-def test_the_core_without_hypotheses_leaves_their_logic_out():
+@pytest.mark.parametrize("top", ["prenc_core", "prenc_wb", "prenc_board"])
+def test_the_core_without_hypotheses_leaves_their_logic_out(top):
     """HYPOTHESES = 0 (no hypotheses after a missed quadrature state) is for boards that
     need a smaller core: synthesis must drop the hypothesis logic (about a fifth of the
-    core's LUTs and of its flip-flops: docs/architecture.md, "What the logic pays for")."""
-    def ffs_luts(extra):
-        cells = synthesize("prenc_core", "ice40", {"ROM_FILE": rom_file(10), **extra}).cells
+    core's LUTs and of its flip-flops: docs/architecture.md, "What the logic pays for"),
+    set on the core or on a wrapper, which passes it on."""
+    def ffs_luts(name, extra):
+        cells = synthesize(name, "ice40", {"ROM_FILE": rom_file(10), **extra}).cells
         return sum(n for c, n in cells.items() if c.startswith("SB_DFF")), cells.get("SB_LUT4", 0)
 
-    ff, lut = ffs_luts({})
-    ff0, lut0 = ffs_luts({"HYPOTHESES": 0})
-    assert lut0 < 0.85 * lut, (lut, lut0)
+    _, core_lut = ffs_luts("prenc_core", {})
+    ff, lut = ffs_luts(top, {})
+    ff0, lut0 = ffs_luts(top, {"HYPOTHESES": 0})
+    assert lut - lut0 > 0.15 * core_lut, (core_lut, lut, lut0)
     assert ff0 < ff - 40, (ff, ff0)
+
+
+@pytest.mark.parametrize("top", ["prenc_wb", "prenc_board"])
+def test_a_wrapper_passes_conv_reg_to_the_core(top):
+    """CONV_REG = 1 on a wrapper registers the core's converter outputs and bases: 4N
+    flip-flops more (N = 10), as on the core itself."""
+    def ffs(extra):
+        cells = synthesize(top, "ice40", {"ROM_FILE": rom_file(10), **extra}).cells
+        return sum(n for c, n in cells.items() if c.startswith("SB_DFF"))
+
+    assert ffs({"CONV_REG": 1}) - ffs({}) == 40
 
 
 @pytest.mark.parametrize("argv", [["--core", "ice40-hx8k", "--param", "HYPOTHESES"],

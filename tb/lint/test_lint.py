@@ -80,6 +80,9 @@ BAD_PARAMETERS = [
     ("prenc_core", "CONV_REG", 2),
     ("prenc_quadrature", "COUNT_WIDTH", 1), ("prenc_sampler", "HEAD_DELAY", 2),
     ("prenc_wb", "N", 25), ("prenc_wb", "FILTER", 70000),
+    # the core's options, passed through the wrappers to the core's own checks
+    ("prenc_wb", "HYPOTHESES", 2), ("prenc_wb", "LOCK_BOTH", 0), ("prenc_board", "CONV_REG", 2),
+    ("prenc_board", "DUAL_VOTES", 8),
 ]
 
 
