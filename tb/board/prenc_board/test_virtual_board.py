@@ -24,7 +24,7 @@ from prenc.virtual.profiles import profile
 from prenc.virtual.scenarios import core_latency
 from runner import REPO, SIM_BUILD
 
-N, CLK_MHZ, FILTER, RPM = 10, 30, 2, 600  # the board's defaults (the iCEBreaker's clock)
+N, CLK_MHZ, FILTER, RPM = 10, 30, 2, 600  # CLK_MHZ: board_sim.py's default, the iCEBreaker's clock
 RESET_CLOCKS = 6.5  # the virtual board holds reset 6 clocks; time_us starts after it
 
 
