@@ -660,6 +660,12 @@ module prenc_mode_fsm #(
                 (!f_both_prev && !f_one1_prev && f_one2_prev && offset == f_off2_prev &&
                  law_on == 2'b10 && mode == REDUCED_2));
       end
+      // And it rises on that evidence, on the strobe that brings it: no lock is held
+      // back (the availability half of the promise).
+      if (!f_valid_prev && !f_dual_prev && f_strobe_prev && !f_illegal_prev &&
+          (f_both_prev || f_one1_prev || f_one2_prev)) begin
+        assert (pos_valid);
+      end
       if (pos_valid && f_dual_prev) begin
         // Two hypotheses decided: DUAL_VOTES readings at least for the winner, one
         // from each head at least; the count's way keeps the offset, the other way
