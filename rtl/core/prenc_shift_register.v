@@ -101,6 +101,8 @@ module prenc_shift_register #(
   reg [N-1:0]  f_w0;
   reg          f_restore;       // last clock shifted back over the bit that left
   reg [N-1:0]  f_restore_word;
+  reg          f_fill_cw;       // last clock: a strobe that did not move filled bit 0
+  reg          f_fill_ccw;      // ... bit N-1
   integer      f_i;
   reg [CW-1:0] f_ones;
   always @(*) begin
@@ -121,6 +123,8 @@ module prenc_shift_register #(
     f_restore      <= (f_ccw & f_armed_cw & (strobe_head1 == f_w0[N-1])) |
                       (f_cw & f_armed_ccw & (strobe_head2 == f_w0[0]));
     f_restore_word <= f_w0;
+    f_fill_cw      <= strobe & !strobe_moved & strobe_cw & !known_reg[0];
+    f_fill_ccw     <= strobe & !strobe_moved & !strobe_cw & !known_reg[N-1];
     f_armed_cw     <= f_cw;
     f_armed_ccw    <= f_ccw;
     if (f_cw || f_ccw) f_w0 <= word_reg;
@@ -146,6 +150,15 @@ module prenc_shift_register #(
                                known_reg == {1'b1, f_known_before[N-1:1]});
       // A shift back undoes a shift forward, when the head reads the bit that left.
       if (f_restore) assert (word_reg == f_restore_word);
+      // Without a shift no known bit changes or is forgotten; a strobe that did not
+      // move fills only the end bit its leading head reads, and only when unknown.
+      if (!f_shift_cw && !f_shift_ccw) begin
+        assert (((word_reg ^ f_word_before) & f_known_before) == {N{1'b0}});
+        assert (known_reg == (f_known_before | ({{(N - 1){1'b0}}, f_fill_ccw} << (N - 1)) |
+                              {{(N - 1){1'b0}}, f_fill_cw}));
+        if (f_fill_cw) assert (word_reg[0] == f_h2);
+        if (f_fill_ccw) assert (word_reg[N-1] == f_h1);
+      end
     end
   end
   always @(posedge clk) begin
