@@ -125,7 +125,8 @@ module prenc_uart_rx #(
   // 1. It cannot lock up: after any input, once the line has been high for a byte
   //    time (and the synchronizer), the receiver is idle.
   // 2. It accepts a good byte then: a byte sent after that idle time, at the exact
-  //    bit time, is received with its value, once.
+  //    bit time, is received with its value, once; the same byte with a low stop bit
+  //    is a framing error, once, and no byte.
   localparam integer F_IDLE = 2 + 10 * CLKS_PER_BIT;   // clocks of high line
   localparam integer F_END  = 10 * CLKS_PER_BIT + 4;   // a byte's frame and the latency
   reg        f_past_valid = 1'b0;
@@ -133,10 +134,12 @@ module prenc_uart_rx #(
   reg [7:0]  f_high;                      // clocks the line has been high (saturating)
   (* anyconst *) reg [7:0] f_byte;        // the byte a sender sends
   (* anyseq *)   reg       f_go;          // ... when it chooses, after an idle line
+  (* anyconst *) reg       f_bad_stop;    // ... with a low stop bit
   reg        f_sending;
   reg [7:0]  f_t;                         // clocks since the start bit began
   reg [1:0]  f_got;                       // bytes received during the frame
-  reg        f_wrong;                     // a byte other than f_byte, or a framing error
+  reg        f_wrong;                     // a byte other than f_byte
+  reg [1:0]  f_errs;                      // framing errors during the frame
   wire [3:0] f_bit = f_t / CLKS_PER_BIT;  // 0 start, 1..8 data LSB first, 9 stop
   always @(posedge clk) begin
     f_past_valid <= 1'b1;
@@ -147,23 +150,41 @@ module prenc_uart_rx #(
       f_t       <= 8'd0;
       f_got     <= 2'd0;
       f_wrong   <= 1'b0;
+      f_errs    <= 2'd0;
     end else if (f_sending && f_t != 8'hFF) begin
       f_t <= f_t + 8'd1;
       if (valid) begin
         f_got   <= f_got + 2'd1;
         f_wrong <= f_wrong | (data != f_byte);
       end
-      if (frame_error) f_wrong <= 1'b1;
+      if (frame_error && f_errs != 2'd3) f_errs <= f_errs + 2'd1;
     end
     if (rst) f_sending <= 1'b0;
   end
   // rx as sampled three clock edges ago: what rx_q2 held on the last clock.
   reg [2:0] f_rx = 3'b111;
   always @(posedge clk) f_rx <= {f_rx[1:0], rx};
+  // The data bits of a byte follow a start bit: BITS entered from START (its low
+  // middle sampled), START entered from IDLE (a falling line), neither left since.
+  reg  [1:0] f_state_prev;
+  reg        f_started_prev;
+  reg        f_framed_prev;
+  wire       f_started = (state == START) &&
+                         (f_state_prev == IDLE || (f_state_prev == START && f_started_prev));
+  wire       f_framed  = (state == BITS) &&
+                         ((f_state_prev == START && f_started_prev) ||
+                          (f_state_prev == BITS && f_framed_prev));
+  always @(posedge clk) begin
+    f_state_prev   <= rst ? IDLE : state;
+    f_started_prev <= !rst && f_started;
+    f_framed_prev  <= !rst && f_framed;
+  end
   always @(*) begin
     // A byte is accepted only on a high stop bit sample; a low one is a framing error.
     if (f_past_valid && !f_rst_prev && valid) assert (f_rx[2]);
     if (f_past_valid && !f_rst_prev && frame_error) assert (!f_rx[2]);
+    // Either ends a byte that began with a start bit.
+    if (f_past_valid && !f_rst_prev && (valid || frame_error)) assert (f_framed_prev);
   end
   initial assume (rst);
   initial assume (!f_sending);
@@ -174,6 +195,7 @@ module prenc_uart_rx #(
     if (f_sending && f_t < 8'hF0) begin
       if (f_bit == 4'd0) assume (!rx);
       else if (f_bit <= 4'd8) assume (rx == f_byte[f_bit - 4'd1]);
+      else if (f_bit == 4'd9) assume (rx == !f_bad_stop);
       else assume (rx);
     end
     if (f_past_valid && !f_rst_prev) begin
@@ -185,7 +207,10 @@ module prenc_uart_rx #(
       if (state == BITS) assert (bit_index <= 4'd8 && timer <= FULL);
       if (state == START) assert (timer <= HALF);
       if (f_high >= 8'd2) assert (rx_q2);
-      if (f_sending && f_t == F_END) assert (f_got == 2'd1 && !f_wrong);
+      if (f_sending && f_t == F_END) begin
+        if (f_bad_stop) assert (f_got == 2'd0 && f_errs == 2'd1);
+        else assert (f_got == 2'd1 && !f_wrong && f_errs == 2'd0);
+      end
     end
   end
   always @(posedge clk) begin
