@@ -60,14 +60,17 @@ def sections(text: str) -> dict[str, list[str]]:
 
 def formal_lines(path: Path) -> set[int]:
     """Line numbers inside `ifdef FORMAL ... `endif of a source, as Yosys numbers them."""
-    lines, inside = set(), False
+    lines, depth = set(), 0  # depth: `ifdef levels open inside the FORMAL one (1 = it)
     for line, number in zip(path.read_text().splitlines(), yosys_numbers(path)):
-        if line.strip().startswith("`ifdef FORMAL"):
-            inside = True
-        if inside:
+        text = line.strip()
+        if depth == 0 and text.startswith("`ifdef FORMAL"):
+            depth = 1
+        elif depth and text.startswith(("`ifdef", "`ifndef")):
+            depth += 1  # e.g. the core's `ifdef F_DISC: its `endif does not end FORMAL
+        if depth:
             lines.add(number)
-        if inside and line.strip().startswith("`endif"):
-            inside = False
+        if depth and text.startswith("`endif"):
+            depth -= 1
     return lines
 
 

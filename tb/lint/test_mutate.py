@@ -26,3 +26,18 @@ def test_a_mutant_runs_every_task_that_asserts_and_no_cover():
 def test_every_proof_has_a_task_that_asserts():
     for proof in sorted(mutate.FORMAL.glob("*.sby")):
         assert tasks(proof.stem), proof.name
+
+
+def test_the_properties_are_never_mutated_nested_ifdefs_included():
+    """Every line from `ifdef FORMAL to its own `endif is a property line, past the
+    `endif of an `ifdef nested in it (the core's F_DISC)."""
+    core = REPO / "rtl" / "core" / "prenc_core.v"
+    lines = core.read_text().splitlines()
+    numbers = mutate.yosys_numbers(core)
+    skip = mutate.formal_lines(core)
+    first = next(i for i, l in enumerate(lines) if l.strip().startswith("`ifdef FORMAL"))
+    nested_end = next(i for i, l in enumerate(lines) if i > first and l.strip().startswith("`endif"))
+    covers = [i for i, l in enumerate(lines) if i > nested_end and l.strip().startswith("cover (")]
+    assert covers, "the core's covers follow its nested `ifdef"
+    assert all(numbers[i] in skip for i in covers)
+    assert numbers[first - 1] not in skip  # the design before it is mutated
