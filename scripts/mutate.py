@@ -2,11 +2,14 @@
 # SPDX-License-Identifier: Apache-2.0
 """`make mutate`: do the formal checks have teeth? Mutants that the proofs must kill.
 
-    python scripts/mutate.py [--count 24] [--seed 1] [proof ...]
+    python scripts/mutate.py [--count 24] [--seed 1] [--covers] [proof ...]
 
 Default: every proof of formal/*.sby with a prove task (k-induction); the core's bounded
-proof (prenc_core: its `bmc` and `disc` tasks) runs when named, about 6 min a mutant
-(`--count 8` for a sample).
+proof (prenc_core: its `bmc` and `disc` tasks) runs when named. Most mutants of the
+core break its lock, after which no bounded assertion has a valid position to check:
+`--covers` runs the cover tasks too, and a cover no longer reached (the first lock
+from the pins, a missed state survived) kills the mutant:
+`python scripts/mutate.py --covers --count 8 prenc_core` (about 20 min on 2 cores).
 
 For each proof formal/<block>.sby:
 
@@ -74,14 +77,17 @@ def formal_lines(path: Path) -> set[int]:
     return lines
 
 
-def checking_tasks(parts: dict[str, list[str]]) -> list[str]:
+def checking_tasks(parts: dict[str, list[str]], covers: bool = False) -> list[str]:
     """The proof's tasks that check assertions: those whose mode is prove or bmc (a
-    bounded proof; the core's `disc` task is one), not cover."""
+    bounded proof; the core's `disc` task is one), and with `covers` its cover tasks
+    too (a cover no longer reached kills the mutant: a core that never locks passes
+    every bounded assertion, vacuously)."""
     tasks = [t.strip() for t in parts.get("tasks", []) if t.strip()]
     options = "\n".join(parts.get("options", []))
     shared = re.search(r"^\s*mode\s+(\w+)", options, re.M)  # one mode for every task
     modes = dict(re.findall(r"^\s*(\w+)\s*:\s*mode\s+(\w+)", options, re.M))
-    return [t for t in tasks if modes.get(t, shared.group(1) if shared else "") in ("prove", "bmc")]
+    wanted = ("prove", "bmc", "cover") if covers else ("prove", "bmc")
+    return [t for t in tasks if modes.get(t, shared.group(1) if shared else "") in wanted]
 
 
 def task_script(lines: list[str], task: str) -> list[str]:
@@ -152,7 +158,8 @@ def design_mutations(work: Path, before: list[str], top: str, ask: int, seed: in
     return keep
 
 
-def run_mutant(proof: Path, work: Path, index: int, mutation: str) -> tuple[int, str, bool, float]:
+def run_mutant(proof: Path, work: Path, index: int, mutation: str,
+               covers: bool = False) -> tuple[int, str, bool, float]:
     parts = sections(proof.read_text())
     text = proof.read_text()
     script = "\n".join(parts["script"])
@@ -168,9 +175,12 @@ def run_mutant(proof: Path, work: Path, index: int, mutation: str) -> tuple[int,
     sby.write_text(text)
     t0 = time.monotonic()
     shutil.rmtree(work / f"mutant_{index:03d}_prove", ignore_errors=True)
-    proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, *checking_tasks(parts)],
+    proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, *checking_tasks(parts, covers)],
                           cwd=work, env=env(), capture_output=True, text=True, timeout=1800)
-    if "DONE (FAIL" in proc.stdout or "DONE (UNKNOWN" in proc.stdout:
+    if "DONE (ERROR" in proc.stdout:
+        verdict = "invalid"  # a task could not run: not counted
+        print(f"    mutant {sby.name} not run: {proc.stdout.strip().splitlines()[-4:]}", flush=True)
+    elif "DONE (FAIL" in proc.stdout or "DONE (UNKNOWN" in proc.stdout:
         verdict = "killed"  # a property fails, or is no longer provable
     elif "DONE (PASS" in proc.stdout:
         verdict = "survived"
@@ -192,6 +202,8 @@ def main(argv=None) -> int:
     p.add_argument("--count", type=int, default=24, help="mutants per block (default 24)")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--covers", action="store_true",
+                   help="run the cover tasks too: an unreached cover kills (for the core's bounded proof)")
     args = p.parse_args(argv)
     if args.proofs:
         proofs = [FORMAL / f"{n}.sby" for n in args.proofs]
@@ -214,7 +226,8 @@ def main(argv=None) -> int:
         flat = work / proof.name
         flat.write_text(text)
         with ThreadPoolExecutor(args.jobs) as pool:
-            results = sorted(pool.map(lambda im: run_mutant(flat, work, im[0], im[1]), enumerate(muts)))
+            results = sorted(pool.map(lambda im: run_mutant(flat, work, im[0], im[1], args.covers),
+                                      enumerate(muts)))
         killed = sum(1 for r in results if r[2] == "killed")
         unproven = sum(1 for r in results if r[2] == "unproven")
         survivors = [r for r in results if r[2] == "survived"]

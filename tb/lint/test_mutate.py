@@ -21,6 +21,9 @@ def test_a_mutant_runs_every_task_that_asserts_and_no_cover():
     assert tasks("prenc_mode_fsm") == ["prove", "prove_h0"]
     # one mode for every task (`mode prove` without a task prefix)
     assert tasks("prenc_converter") == ["prove"]
+    # --covers: the cover tasks as well
+    core = mutate.sections((mutate.FORMAL / "prenc_core.sby").read_text())
+    assert mutate.checking_tasks(core, covers=True) == ["bmc", "disc", "cover"]
 
 
 def test_every_proof_has_a_task_that_asserts():
