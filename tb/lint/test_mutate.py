@@ -24,6 +24,10 @@ def test_a_mutant_runs_every_task_that_asserts_and_no_cover():
     # --covers: the cover tasks as well
     core = mutate.sections((mutate.FORMAL / "prenc_core.sby").read_text())
     assert mutate.checking_tasks(core, covers=True) == ["bmc", "disc", "cover"]
+    # a mutant runs those that read the design as the listing task does: not disc
+    assert mutate.same_netlist_tasks(core, covers=True) == ["bmc", "cover"]
+    fsm = mutate.sections((mutate.FORMAL / "prenc_mode_fsm.sby").read_text())
+    assert mutate.same_netlist_tasks(fsm) == ["prove"]  # prove_h0 sets HYPOTHESES 0
 
 
 def test_every_proof_has_a_task_that_asserts():
