@@ -5,13 +5,12 @@
     python scripts/mutate.py [--count 24] [--seed 1] [--covers] [proof ...]
 
 Default: every proof of formal/*.sby with a prove task (k-induction); the core's bounded
-proof (prenc_core) runs when named. A mutant runs the tasks that read the design as the
-first checking task does (the mutations name Yosys's numbered cells, and the core's
-`disc` task, read with -DF_DISC, numbers them otherwise: it is left out). Most mutants
-of the core break its lock, after which no bounded assertion has a valid position to
-check: `--covers` runs the cover tasks too, and a cover no longer reached (the first
-lock from the pins, a missed state survived) kills the mutant:
-`python scripts/mutate.py --covers --count 8 prenc_core` (about 10 min on 2 cores).
+proof (prenc_core) runs when named: `python scripts/mutate.py --count 8 prenc_core`
+(about 15 min on 2 cores). A mutant runs the tasks that read the design as the first
+checking task does: the mutations name Yosys's numbered cells, which a task with other
+parameters or defines numbers otherwise. For the core that is its `disc` task (a valid
+position is the disc's), listed first. `--covers` adds the cover tasks that read the
+design the same way: a cover no longer reached kills the mutant.
 
 For each proof formal/<block>.sby:
 
