@@ -498,12 +498,16 @@ module prenc_core #(
   reg [3:0] f_illegal_d;
   reg [N+1:0] f_hyb_prev;
   reg         f_valid_prev;
+  reg [COUNT_WIDTH-1:0] f_inc_prev;
+  reg         f_rst_last;  // rst on the clock before
   always @(posedge clk) begin
     f_step_d     <= {f_step_d[2:0], step_next};
     f_cw_d       <= {f_cw_d[2:0], step_cw_next};
     f_illegal_d  <= {f_illegal_d[2:0], illegal_next};
     f_hyb_prev   <= pos_hyb;
     f_valid_prev <= pos_valid;
+    f_inc_prev   <= incremental;
+    f_rst_last   <= rst;
   end
   always @(*) begin
     if (f_past_valid && f_since_rst >= 4'd6) begin
@@ -526,6 +530,13 @@ module prenc_core #(
       if (track2_valid) assert (pos_valid && law[1]);
       assert (track1_pos == pos_abs && track2_pos == pos_abs);
       assert (position == (resolution ? pos_hyb : {2'b00, pos_abs}));
+    end
+    // The incremental count: 0 after reset, then one up or down with each legal step
+    // on the decoder's edge, and nothing else.
+    if (f_past_valid && f_rst_last) assert (incremental == {COUNT_WIDTH{1'b0}});
+    if (f_past_valid && !f_rst_last) begin
+      if (f_step_d[0]) assert (incremental == (f_cw_d[0] ? f_inc_prev + 1'b1 : f_inc_prev - 1'b1));
+      else assert (incremental == f_inc_prev);
     end
   end
 `ifdef F_DISC
