@@ -47,6 +47,7 @@ REPO = Path(__file__).resolve().parents[1]
 FORMAL = REPO / "formal"
 OUT = REPO / "build" / "mutate"
 BIN = Path(sys.executable).parent
+TIMEOUT_S = 1800  # one mutant's proof
 
 
 def sections(text: str) -> dict[str, list[str]]:
@@ -185,8 +186,12 @@ def run_mutant(proof: Path, work: Path, index: int, mutation: str,
     sby.write_text(text)
     t0 = time.monotonic()
     shutil.rmtree(work / f"mutant_{index:03d}_prove", ignore_errors=True)
-    proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, *same_netlist_tasks(parts, covers)],
-                          cwd=work, env=env(), capture_output=True, text=True, timeout=1800)
+    try:
+        proc = subprocess.run([str(BIN / "yowasp-sby"), "-f", sby.name, *same_netlist_tasks(parts, covers)],
+                              cwd=work, env=env(), capture_output=True, text=True, timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired:  # reported, not counted; the other mutants go on
+        print(f"    mutant {sby.name} not finished in {TIMEOUT_S} s", flush=True)
+        return index, mutation, "timeout", time.monotonic() - t0
     if "DONE (ERROR" in proc.stdout:
         verdict = "invalid"  # a task could not run: not counted
         print(f"    mutant {sby.name} not run: {proc.stdout.strip().splitlines()[-4:]}", flush=True)
@@ -241,7 +246,8 @@ def main(argv=None) -> int:
         killed = sum(1 for r in results if r[2] == "killed")
         unproven = sum(1 for r in results if r[2] == "unproven")
         survivors = [r for r in results if r[2] == "survived"]
-        results = [r for r in results if r[2] != "invalid"]
+        timeouts = [r for r in results if r[2] == "timeout"]
+        results = [r for r in results if r[2] not in ("invalid", "timeout")]
         line = (f"| {proof.stem} | {killed + unproven} / {len(results)} | {killed} | {unproven} "
                 f"| {len(survivors)} |")
         report.append(line)
@@ -249,6 +255,9 @@ def main(argv=None) -> int:
         for index, mutation, _, seconds in survivors:
             details.append(f"- {proof.stem} #{index}: `{mutation}`")
             print(f"    survived #{index}: {mutation}", flush=True)
+        for index, mutation, _, seconds in timeouts:
+            details.append(f"- {proof.stem} #{index} (not finished in {TIMEOUT_S} s): `{mutation}`")
+            print(f"    not finished #{index}: {mutation}", flush=True)
     OUT.mkdir(parents=True, exist_ok=True)
     (OUT / "report.md").write_text("\n".join(report + ["", "Survivors:", ""] + (details or ["none"])) + "\n")
     print(f"report: {(OUT / 'report.md').relative_to(REPO)}")

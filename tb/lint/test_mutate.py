@@ -49,3 +49,17 @@ def test_the_properties_are_never_mutated_nested_ifdefs_included():
     assert covers, "the core's covers follow its nested `ifdef"
     assert all(numbers[i] in skip for i in covers)
     assert numbers[first - 1] not in skip  # the design before it is mutated
+
+
+def test_a_mutant_that_runs_too_long_is_reported_and_the_others_go_on(tmp_path, monkeypatch):
+    """One mutant's proof past the limit must not stop the run (it used to raise)."""
+    import subprocess
+
+    def too_long(*args, **kwargs):
+        raise subprocess.TimeoutExpired(args[0], mutate.TIMEOUT_S)
+
+    monkeypatch.setattr(mutate.subprocess, "run", too_long)
+    proof = mutate.FORMAL / "prenc_shift_register.sby"
+    (tmp_path / proof.name).write_text(proof.read_text())
+    index, _, verdict, _ = mutate.run_mutant(tmp_path / proof.name, tmp_path, 3, "mutate -mode inv")
+    assert (index, verdict) == (3, "timeout")
