@@ -170,7 +170,7 @@ def design_mutations(work: Path, before: list[str], top: str, ask: int, seed: in
 
 
 def run_mutant(proof: Path, work: Path, index: int, mutation: str,
-               covers: bool = False) -> tuple[int, str, bool, float]:
+               covers: bool = False) -> tuple[int, str, str, float]:
     parts = sections(proof.read_text())
     text = proof.read_text()
     script = "\n".join(parts["script"])

@@ -20,6 +20,12 @@ import synth  # noqa: E402
 pytestmark = [pytest.mark.synth, pytest.mark.xdist_group("yowasp")]
 
 
+def ffs_luts(top: str, **parameters) -> tuple[int, int]:
+    """Flip-flops and LUT4s of `top` synthesized for iCE40 (N = 10), with `parameters`."""
+    cells = synthesize(top, "ice40", {"ROM_FILE": rom_file(10), **parameters}).cells
+    return sum(n for c, n in cells.items() if c.startswith("SB_DFF")), cells.get("SB_LUT4", 0)
+
+
 @pytest.mark.parametrize("board", sorted(synth.BOARDS))
 def test_board_builds_and_meets_timing(board):
     out = SIM_BUILD / "boards" / board
@@ -61,10 +67,6 @@ def test_the_harness_keeps_all_of_the_core():
     16 registers each). At N = 10 the harness has its fold's 49 registers (36, 9, 3 and
     1) and all but one of the core's 416 (Yosys finds one redundant), and at least the
     core's LUTs (ABC merges the first fold stage into the logic before it)."""
-    def ffs_luts(top):
-        cells = synthesize(top, "ice40", {"ROM_FILE": rom_file(10)}).cells
-        return sum(n for c, n in cells.items() if c.startswith("SB_DFF")), cells.get("SB_LUT4", 0)
-
     core_ff, core_lut = ffs_luts("prenc_core")
     harness_ff, harness_lut = ffs_luts("prenc_core_harness")
     assert harness_ff >= core_ff + 48, (core_ff, harness_ff)
@@ -91,13 +93,9 @@ def test_the_core_without_hypotheses_leaves_their_logic_out(top):
     need a smaller core: synthesis must drop the hypothesis logic (about a fifth of the
     core's LUTs and of its flip-flops: docs/architecture.md, "What the logic pays for"),
     set on the core or on a wrapper, which passes it on."""
-    def ffs_luts(name, extra):
-        cells = synthesize(name, "ice40", {"ROM_FILE": rom_file(10), **extra}).cells
-        return sum(n for c, n in cells.items() if c.startswith("SB_DFF")), cells.get("SB_LUT4", 0)
-
-    _, core_lut = ffs_luts("prenc_core", {})
-    ff, lut = ffs_luts(top, {})
-    ff0, lut0 = ffs_luts(top, {"HYPOTHESES": 0})
+    _, core_lut = ffs_luts("prenc_core")
+    ff, lut = ffs_luts(top)
+    ff0, lut0 = ffs_luts(top, HYPOTHESES=0)
     assert lut - lut0 > 0.15 * core_lut, (core_lut, lut, lut0)
     assert ff0 < ff - 40, (ff, ff0)
 
@@ -106,11 +104,7 @@ def test_the_core_without_hypotheses_leaves_their_logic_out(top):
 def test_a_wrapper_passes_conv_reg_to_the_core(top):
     """CONV_REG = 1 on a wrapper registers the core's converter outputs and bases: 4N
     flip-flops more (N = 10), as on the core itself."""
-    def ffs(extra):
-        cells = synthesize(top, "ice40", {"ROM_FILE": rom_file(10), **extra}).cells
-        return sum(n for c, n in cells.items() if c.startswith("SB_DFF"))
-
-    assert ffs({"CONV_REG": 1}) - ffs({}) == 40
+    assert ffs_luts(top, CONV_REG=1)[0] - ffs_luts(top)[0] == 40
 
 
 @pytest.mark.parametrize("argv", [["--core", "ice40-hx8k", "--param", "HYPOTHESES"],
