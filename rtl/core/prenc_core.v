@@ -524,7 +524,7 @@ module prenc_core #(
     if (f_past_valid && !rst) begin
       assert (pos_valid == (mode == 3'd1 || mode == 3'd2 || mode == 3'd3));
       // The outputs made from the position claim no more than pos_valid: a track's
-      // flag only with it (and with that track in law mode on the offset), its
+      // flag only with it (and with that track in law mode), its
       // position the core's, and `position` the one `resolution` selects.
       if (track1_valid) assert (pos_valid && law[0]);
       if (track2_valid) assert (pos_valid && law[1]);
