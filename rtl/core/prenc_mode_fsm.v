@@ -277,10 +277,12 @@ module prenc_mode_fsm #(
   assign below_reg = (rel_d < lo_reg);
   (* keep *) wire above_reg;
   assign above_reg = (rel_d > hi_reg);
-  (* keep *) wire not_above;  // not above this event
-  assign not_above = (rel_d >= rel);
-  (* keep *) wire not_below;
-  assign not_below = (rel_d <= rel);
+  // In dual the next event's place less this one's is the count's step between them
+  // (rel_d - rel = slot_ahead - slot: one slot at most), so its sign is read from the
+  // two slots' low bits, not from two comparisons of rel_d with rel. (Where rel_d
+  // leaves RW bits, the next event is far, and fresh and the interval go unread.)
+  wire not_above = (step2 != 2'd3);  // rel_d >= rel
+  wire not_below = (step2 != 2'd1);  // rel_d <= rel
   wire below  = below_reg & ~(widen & not_above);  // used in dual only
   wire above  = above_reg & ~(widen & not_below);
   reg  fresh;
