@@ -38,7 +38,8 @@
    at N = 10 also with placer seeds 2 and 3 (the spread of Fmax is several per cent);
    and the core with HYPOTHESES = 0 (no hypotheses after a missed state), what they cost;
    and with CONV_REG = 1 (the converters' output registered, the same outputs) on ECP5-25k,
-   seeds 1 to 3, and the HX8K.
+   seeds 1 to 3, and the HX8K. Then what limits Fmax: the core with the judge, the track
+   words or both made ideal (scripts/fmax_ceiling.py), HX8K seeds 1-3, ECP5-25k seeds 1-2.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios); the
    time to rebuild Table 1 to n = 10 (20 s of exact search per open entry); the RTL
@@ -350,9 +351,31 @@ def main() -> int:
     print(f"\n7. Synthesis, Yosys {yosys_version_short()}, nextpnr {nextpnr_version()} (YoWASP)")
     for what, n, line in synthesis_rows():
         print(f"   {what:<46} N={n:<3} {line}")
+    ceiling_section()
 
     failed |= nd_section()
     return 1 if failed else 0
+
+
+def ceiling_section() -> None:
+    """What limits the core's Fmax: each block's ceiling with the others ideal (scripts/fmax_ceiling.py)."""
+    sys.path.insert(0, str(REPO / "scripts"))
+    import fmax_ceiling
+    import synth
+
+    print("   What limits Fmax (scripts/fmax_ceiling.py): the core at N = 10 with the judge, the track words")
+    print("   or both replaced by ideal stubs (same ports, one LUT from registers); mean MHz over the seeds:")
+    for target, seeds, parameters in (("ice40-hx8k", [1, 2, 3], {}), ("ecp5-25k", [1, 2], {"CONV_REG": 1})):
+        cells = []
+        for label, ideal in fmax_ceiling.ROWS.items():
+            out = SIM_BUILD / "bench" / "ceiling" / target / label.replace(" ", "_")
+            try:
+                lc, fmax = fmax_ceiling.ceiling(target, ideal, seeds, out, parameters)
+                cells.append(f"{label} {sum(fmax) / len(fmax):.1f}")
+            except synth.FlowError as err:
+                cells.append(f"{label} FAILED ({err})")
+        extra = "".join(f", {k} = {v}" for k, v in parameters.items())
+        print(f"   {synth.TARGETS[target].name}{extra}, seeds {seeds[0]}-{seeds[-1]}: " + ", ".join(cells) + " MHz")
 
 
 def goals_section() -> bool:
