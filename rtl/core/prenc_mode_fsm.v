@@ -171,9 +171,12 @@ module prenc_mode_fsm #(
   wire [1:0] lawish = (law & ~flush_reg) | law_on_reg;
   // Lock evidence, in parallel with the state logic.
   // The span comparisons are registered one clock ahead, from the J1 input.
-  wire [5:0] need_both = (&quiet_ahead) ? NEED_BOTH : DEEP_BOTH;
-  wire [5:0] need_one1 = quiet_ahead[0] ? NEED_ONE : DEEP_ONE;
-  wire [5:0] need_one2 = quiet_ahead[1] ? NEED_ONE : DEEP_ONE;
+  // Each span against the constant depths, then the head's quiet chooses (a comparison
+  // with a chosen depth is an adder's carry chain; with a constant, plain logic).
+  wire [1:0] ge_need_both = {span2_ahead >= NEED_BOTH, span1_ahead >= NEED_BOTH};
+  wire [1:0] ge_deep_both = {span2_ahead >= DEEP_BOTH, span1_ahead >= DEEP_BOTH};
+  wire [1:0] ge_need_one  = {span2_ahead >= NEED_ONE, span1_ahead >= NEED_ONE};
+  wire [1:0] ge_deep_one  = {span2_ahead >= DEEP_ONE, span1_ahead >= DEEP_ONE};
   reg  [1:0] full;        // full and steady: its offset may be read
   reg  [1:0] ready;       // full, steady and settled
   reg        blocked;     // a full, settled track's offset just moved: no lock now
@@ -183,8 +186,8 @@ module prenc_mode_fsm #(
     full      <= full_ahead & steady_ahead;
     ready     <= full_ahead & settled_ahead & steady_ahead;
     blocked   <= |(full_ahead & settled_ahead & ~steady_ahead);
-    span_both <= {span2_ahead >= need_both, span1_ahead >= need_both};
-    span_one  <= {span2_ahead >= need_one2, span1_ahead >= need_one1};
+    span_both <= (&quiet_ahead) ? ge_need_both : ge_deep_both;
+    span_one  <= (quiet_ahead & ge_need_one) | (~quiet_ahead & ge_deep_one);
     if (rst) begin
       full      <= 2'b00;
       ready     <= 2'b00;
