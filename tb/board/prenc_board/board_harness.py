@@ -59,6 +59,11 @@ class Bridge:
         self.snapshots: list[int] = []
         self.corrupt_byte: int | None = None  # index of a board byte to corrupt on the way
         self.sent = 0
+        # Board bytes the pty did not take yet: a host slower than the simulation (a loaded
+        # machine) must not lose bytes, as a USB-UART bridge's buffer would not. Bounded,
+        # for the phases where no host reads the pty at all.
+        self.backlog = bytearray()
+        self.backlog_limit = 1 << 16
         cocotb.start_soon(self._to_board())
         cocotb.start_soon(self._to_host())
         if snapshots:
@@ -70,6 +75,7 @@ class Bridge:
                 data = os.read(self.master, 256)
             except (BlockingIOError, OSError):
                 data = b""
+            self._flush()
             if data:
                 await self.source.send(data)
             else:
@@ -81,10 +87,19 @@ class Bridge:
             if self.sent == self.corrupt_byte:
                 byte ^= 0x10
             self.sent += 1
+            self.backlog.append(byte)
+            if len(self.backlog) > self.backlog_limit:  # nobody has read the pty for long
+                del self.backlog[:len(self.backlog) - self.backlog_limit]
+            self._flush()
+
+    def _flush(self) -> None:
+        """Write what the pty takes of the backlog now; keep the rest for later."""
+        while self.backlog:
             try:
-                os.write(self.master, bytes([byte]))
+                written = os.write(self.master, bytes(self.backlog))
             except BlockingIOError:
-                pass  # nobody reads the pty and its buffer is full: the byte is lost
+                return
+            del self.backlog[:written]
 
     async def _snapshots(self) -> None:
         while True:
