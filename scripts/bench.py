@@ -370,7 +370,7 @@ def ceiling_section() -> None:
         for label, ideal in fmax_ceiling.ROWS.items():
             out = SIM_BUILD / "bench" / "ceiling" / target / label.replace(" ", "_")
             try:
-                lc, fmax = fmax_ceiling.ceiling(target, ideal, seeds, out, parameters)
+                _, fmax = fmax_ceiling.ceiling(target, ideal, seeds, out, parameters)
                 cells.append(f"{label} {sum(fmax) / len(fmax):.1f}")
             except synth.FlowError as err:
                 cells.append(f"{label} FAILED ({err})")
