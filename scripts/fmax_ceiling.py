@@ -33,7 +33,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from synth import REPO, TARGETS, FlowError, build, check_taps, file_list, list_file, rel, rom_for, taps_mask  # noqa: E402
+from synth import REPO, TARGETS, FlowError, core_build, file_list, list_file, rel  # noqa: E402
 
 ROWS = {
     "core": (),
@@ -93,13 +93,11 @@ def sources_with(ideal: tuple[str, ...], out: Path) -> list[Path]:
 def ceiling(target: str, ideal: tuple[str, ...], seeds: list[int], out: Path,
             parameters: dict[str, int]) -> tuple[int, list[float]]:
     """Logic cells and Fmax per seed of the core with `ideal` modules stubbed."""
-    rom = rom_for(10, out)
-    params = {"N": 10, "TAPS": taps_mask(check_taps(10)), "ROM_FILE": rom, **parameters}
     sources = sources_with(ideal, out)
     cells, fmax = 0, []
     for seed in seeds:
-        result = build("prenc_core", sources, target, params, 100.0, out / f"seed{seed}", bitstream=False,
-                       require_timing=False, seed=seed)
+        result = core_build(target, 10, 100.0, out / f"seed{seed}", require_timing=False, seed=seed,
+                            parameters=parameters, sources=sources)
         cells = result.used(TARGETS[target].logic)[0]
         fmax.append(min(c["achieved"] for c in result.clocks.values()))
     return cells, fmax
