@@ -3,7 +3,7 @@
 """What limits the core's Fmax: each block's ceiling, with the others made ideal.
 
     python scripts/fmax_ceiling.py ice40-hx8k                        # the four rows, seeds 1-5
-    python scripts/fmax_ceiling.py ecp5-25k --seeds 1,2,3 --set CONV_REG=1
+    python scripts/fmax_ceiling.py ecp5-25k --seeds 1,2,3 --param CONV_REG=1
     python scripts/fmax_ceiling.py ice40-hx8k --ideal prenc_mode_fsm  # one row
 
 nextpnr reports the worst path of a placement, and the placer's seed moves it: a
@@ -33,7 +33,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from synth import REPO, TARGETS, FlowError, core_build, file_list, list_file, rel  # noqa: E402
+from synth import REPO, TARGETS, FlowError, core_build, core_parameters, file_list, list_file, rel  # noqa: E402
 
 ROWS = {
     "core": (),
@@ -109,24 +109,19 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seeds", default="1,2,3,4,5", help="placer seeds (default 1,2,3,4,5)")
     parser.add_argument("--ideal", action="append", choices=("prenc_mode_fsm", "prenc_track_word"),
                         help="one row: these modules ideal (repeatable); default: the four rows")
-    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                        help="a parameter of prenc_core (e.g. CONV_REG=1)")
+    parser.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
+                        help="another integer parameter of prenc_core (e.g. CONV_REG=1), as synth.py's")
     parser.add_argument("--out", type=Path, default=REPO / "build" / "ceiling")
     args = parser.parse_args(argv)
     try:
         seeds = [int(s) for s in args.seeds.split(",")]
-        parameters = {}
-        for item in args.set:
-            name, _, value = item.partition("=")
-            if not name.isidentifier() or not value:
-                raise ValueError(f"--set {item}: need NAME=VALUE")
-            parameters[name] = int(value, 0)
+        parameters = core_parameters(args.param)
     except ValueError as err:
         parser.error(str(err))
     rows = {"custom": tuple(args.ideal)} if args.ideal else ROWS
     unit = TARGETS[args.target].logic
     print(f"prenc_core, N = 10, {TARGETS[args.target].name}, placer seeds {args.seeds}"
-          + (f", {' '.join(args.set)}" if args.set else ""))
+          + (f", {' '.join(args.param)}" if args.param else ""))
     try:
         for label, ideal in rows.items():
             out = args.out / args.target / (label.replace(" ", "_") if not args.ideal else "_".join(ideal))

@@ -291,6 +291,19 @@ def taps_mask(taps: tuple[int, ...]) -> int:
     return mask(taps)
 
 
+def core_parameters(items: list[str]) -> dict[str, int]:
+    """--param NAME=INTEGER options as parameters of the core's top; ValueError names a bad one."""
+    extra: dict[str, int] = {}
+    for item in items:
+        name, _, value = item.partition("=")
+        if not re.fullmatch(r"[A-Z][A-Z0-9_]*", name) or not re.fullmatch(r"-?\d+", value):
+            raise ValueError(f"--param {item!r}: give NAME=INTEGER, e.g. HYPOTHESES=0")
+        if name in ("N", "TAPS", "ROM_FILE"):
+            raise ValueError(f"--param {name}: set by the flow (N, and the ROM it writes)")
+        extra[name] = int(value)
+    return extra
+
+
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
                top: str = "prenc_core", seed: int = 1, parameters: dict[str, int] | None = None,
                sources: list[Path] | None = None) -> Result:
@@ -344,14 +357,10 @@ def main(argv: list[str] | None = None) -> int:
                         help="with --core: set another integer parameter of the top (e.g. HYPOTHESES=0)")
     parser.add_argument("--out", type=Path, help="output folder (default build/synth/<board or core>)")
     args = parser.parse_args(argv)
-    extra: dict[str, int] = {}
-    for item in args.param:
-        name, _, value = item.partition("=")
-        if not re.fullmatch(r"[A-Z][A-Z0-9_]*", name) or not re.fullmatch(r"-?\d+", value):
-            parser.error(f"--param {item!r}: give NAME=INTEGER, e.g. HYPOTHESES=0")
-        if name in ("N", "TAPS", "ROM_FILE"):
-            parser.error(f"--param {name}: set by --bits and the ROM it writes")
-        extra[name] = int(value)
+    try:
+        extra = core_parameters(args.param)
+    except ValueError as err:
+        parser.error(str(err))
     if extra and not args.core:
         parser.error("--param goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"

@@ -16,7 +16,7 @@ from runner import REPO, SIM_BUILD, file_list
 
 sys.path.insert(0, str(REPO / "scripts"))
 import fmax_ceiling  # noqa: E402
-from synth import BIN, FlowError, rel  # noqa: E402
+from synth import BIN, FlowError, core_parameters, rel  # noqa: E402
 
 
 def ports_and_flops(sources: list, top: str, parameters: dict, out) -> tuple[dict, int]:
@@ -70,3 +70,12 @@ def test_a_source_without_the_module_is_an_error():
 def test_a_module_not_in_the_core_is_an_error(tmp_path):
     with pytest.raises(FlowError, match="not a source of prenc_core"):
         fmax_ceiling.sources_with(("prenc_uart_tx",), tmp_path)
+
+
+def test_core_parameters_are_checked():
+    """--param of this script and of synth.py: integers named as Verilog parameters, and
+    not the ones the flow sets itself."""
+    assert core_parameters(["HYPOTHESES=0", "CONV_REG=1"]) == {"HYPOTHESES": 0, "CONV_REG": 1}
+    for bad in ("hypotheses=0", "CONV_REG=one", "CONV_REG", "N=6", "ROM_FILE=1"):
+        with pytest.raises(ValueError, match="--param"):
+            core_parameters([bad])
