@@ -16,7 +16,7 @@
 // slots each (default N + 1 for N >= 8), or one head's word holds one offset over
 // N + LOCK_ONE - 1 distinct slots (default 2N + 1), in either direction.
 //
-// Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 5 + FILTER
+// Latency: pos_abs, pos_hyb and pos_valid show the pins as they were 6 + FILTER
 // clocks earlier, all three aligned. Hold rst for at least 4 clocks.
 //
 // Parameters
@@ -384,8 +384,12 @@ module prenc_core #(
     end
   endgenerate
 
-  // Events carried alongside the track words, then the J1 registers: each track's
-  // offset and evidence, one clock before the judge.
+  // Events carried alongside the track words (which apply each event a clock after
+  // the count: the e registers), then the J1 registers: each track's offset and
+  // evidence, one clock before the judge.
+  reg         illegal_e_reg;
+  reg         illegal_cw_e_reg;
+  reg [N-1:0] slot_e_reg;
   reg         illegal_t_reg;
   reg         illegal_cw_t_reg;
   reg [N-1:0] slot_t_reg;
@@ -397,9 +401,12 @@ module prenc_core #(
   reg [N-1:0] off2_j_reg;
 
   always @(posedge clk) begin
-    illegal_t_reg     <= ev_illegal;
-    illegal_cw_t_reg  <= ev_illegal_cw;
-    slot_t_reg        <= slot;
+    illegal_e_reg     <= ev_illegal;
+    illegal_cw_e_reg  <= ev_illegal_cw;
+    slot_e_reg        <= slot;
+    illegal_t_reg     <= illegal_e_reg;
+    illegal_cw_t_reg  <= illegal_cw_e_reg;
+    slot_t_reg        <= slot_e_reg;
     strobe_j_reg      <= strobe_t;
     illegal_j_reg     <= illegal_t_reg;
     illegal_cw_j_reg  <= illegal_cw_t_reg;
@@ -407,6 +414,8 @@ module prenc_core #(
     off1_j_reg        <= conv1_j - base1_j;
     off2_j_reg        <= conv2_j - base2_j;
     if (rst) begin
+      illegal_e_reg     <= 1'b0;
+      slot_e_reg        <= {N{1'b0}};
       illegal_t_reg     <= 1'b0;
       slot_t_reg        <= {N{1'b0}};
       strobe_j_reg      <= 1'b0;
@@ -437,7 +446,7 @@ module prenc_core #(
     .illegal_cw   (illegal_cw_j_reg),
     .slot         (slot_j_reg),
     .slot_ahead   (slot_t_reg[1:0]),
-    .slot_ahead2  (slot),
+    .slot_ahead2  (slot_e_reg),
     .full_ahead   (full),
     .steady_ahead (steady),
     .off1         (off1_j_reg),
@@ -492,34 +501,34 @@ module prenc_core #(
     if (!f_past_valid || (f_rst_run != 3'd0 && f_rst_run < 3'd4)) assume (rst);
   end
   // The decoder's steps, delayed to meet the position (prenc_position: the count on
-  // the decoder's edge, DECISION_DELAY = 3 more to slot_out).
-  reg [3:0] f_step_d;
-  reg [3:0] f_cw_d;
-  reg [3:0] f_illegal_d;
+  // the decoder's edge, DECISION_DELAY = 4 more to slot_out).
+  reg [4:0] f_step_d;
+  reg [4:0] f_cw_d;
+  reg [4:0] f_illegal_d;
   reg [N+1:0] f_hyb_prev;
   reg         f_valid_prev;
   reg [COUNT_WIDTH-1:0] f_inc_prev;
   reg         f_rst_last;  // rst on the clock before
   always @(posedge clk) begin
-    f_step_d     <= {f_step_d[2:0], step_next};
-    f_cw_d       <= {f_cw_d[2:0], step_cw_next};
-    f_illegal_d  <= {f_illegal_d[2:0], illegal_next};
+    f_step_d     <= {f_step_d[3:0], step_next};
+    f_cw_d       <= {f_cw_d[3:0], step_cw_next};
+    f_illegal_d  <= {f_illegal_d[3:0], illegal_next};
     f_hyb_prev   <= pos_hyb;
     f_valid_prev <= pos_valid;
     f_inc_prev   <= incremental;
     f_rst_last   <= rst;
   end
   always @(*) begin
-    if (f_past_valid && f_since_rst >= 4'd6) begin
+    if (f_past_valid && f_since_rst >= 4'd7) begin
       // While valid, the position moves only with the quadrature: one quarter per
       // legal step, in its direction; an illegal transition clears pos_valid when the
       // count shows it.
       if (f_valid_prev && pos_valid) begin
-        assert (!f_illegal_d[3]);
-        if (f_step_d[3]) assert (pos_hyb == (f_cw_d[3] ? f_hyb_prev + 1'b1 : f_hyb_prev - 1'b1));
+        assert (!f_illegal_d[4]);
+        if (f_step_d[4]) assert (pos_hyb == (f_cw_d[4] ? f_hyb_prev + 1'b1 : f_hyb_prev - 1'b1));
         else assert (pos_hyb == f_hyb_prev);
       end
-      if (f_illegal_d[3]) assert (!pos_valid);
+      if (f_illegal_d[4]) assert (!pos_valid);
     end
     if (f_past_valid && !rst) begin
       assert (pos_valid == (mode == 3'd1 || mode == 3'd2 || mode == 3'd3));
@@ -571,8 +580,8 @@ module prenc_core #(
     assume (f_missed <= `F_MISSED && f_misread <= `F_MISREADS);
   end
   // The pins of clock k are sampled by the edge that ends it; the outputs show that
-  // sample 5 + FILTER edges later, on clock k + 6 + FILTER.
-  localparam integer F_LATENCY = 6 + FILTER;
+  // sample 6 + FILTER edges later, on clock k + 7 + FILTER.
+  localparam integer F_LATENCY = 7 + FILTER;
   reg [N+1:0] f_h_d [0:F_LATENCY-1];
   integer f_d;
   always @(posedge clk) begin

@@ -8,7 +8,7 @@
 // An illegal transition (A and B changed together) moved the disc two quarters;
 // the count takes the pair of steps in the last legal direction (a slot when that
 // crosses a boundary) and the judge keeps the other way open. The count and the
-// quarter are also delayed DECISION_DELAY = 3 more clocks (slot_out, quarter_out),
+// quarter are also delayed DECISION_DELAY = 4 more clocks (slot_out, quarter_out),
 // so that count + offset meets the judge's verdict at one latency.
 // Model: prenc.position.Position.
 //
@@ -19,7 +19,7 @@
 //   quarter, step, step_cw, illegal   from prenc_quadrature (step_cw holds the last
 //                                     legal direction)
 //   slot, up, down, ev_illegal, ev_illegal_cw   registered on t+1
-//   slot_out, quarter_out             the same, three clocks later
+//   slot_out, quarter_out             the same, four clocks later
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -58,17 +58,20 @@ module prenc_position #(
   reg [N-1:0] slot_d1_reg;
   reg [N-1:0] slot_d2_reg;
   reg [N-1:0] slot_d3_reg;
+  reg [N-1:0] slot_d4_reg;
   reg [1:0]   quarter_d1_reg;
   reg [1:0]   quarter_d2_reg;
   reg [1:0]   quarter_d3_reg;
+  reg [1:0]   quarter_d4_reg;
 
   wire move_up   = (step & step_cw & (quarter == 2'd0)) | (illegal & step_cw & ~quarter[1]);
   wire move_down = (step & ~step_cw & (quarter == 2'd3)) | (illegal & ~step_cw & quarter[1]);
 
   always @(posedge clk) begin
-    {slot_d3_reg, slot_d2_reg, slot_d1_reg}          <= {slot_d2_reg, slot_d1_reg, slot_reg};
-    {quarter_d3_reg, quarter_d2_reg, quarter_d1_reg} <=
-        {quarter_d2_reg, quarter_d1_reg, quarter_reg};
+    {slot_d4_reg, slot_d3_reg, slot_d2_reg, slot_d1_reg} <=
+        {slot_d3_reg, slot_d2_reg, slot_d1_reg, slot_reg};
+    {quarter_d4_reg, quarter_d3_reg, quarter_d2_reg, quarter_d1_reg} <=
+        {quarter_d3_reg, quarter_d2_reg, quarter_d1_reg, quarter_reg};
     if (move_up) begin
       slot_reg <= slot_reg + 1'b1;
     end else if (move_down) begin
@@ -88,9 +91,11 @@ module prenc_position #(
       slot_d1_reg    <= {N{1'b0}};
       slot_d2_reg    <= {N{1'b0}};
       slot_d3_reg    <= {N{1'b0}};
+      slot_d4_reg    <= {N{1'b0}};
       quarter_d1_reg <= 2'd0;
       quarter_d2_reg <= 2'd0;
       quarter_d3_reg <= 2'd0;
+      quarter_d4_reg <= 2'd0;
     end
   end
 
@@ -99,15 +104,15 @@ module prenc_position #(
   assign down          = down_reg;
   assign ev_illegal    = illegal_reg;
   assign ev_illegal_cw = illegal_cw_reg;
-  assign slot_out      = slot_d3_reg;
-  assign quarter_out   = quarter_d3_reg;
+  assign slot_out      = slot_d4_reg;
+  assign quarter_out   = quarter_d4_reg;
 
 `ifdef FORMAL
   // Properties (formal/prenc_position.sby), on the registers after each clock: the
   // count in quarters (4 slot + q) follows the decoder one clock later, one quarter
   // per legal step in its direction and two in the last legal direction after an
   // illegal transition; an event is flagged exactly when the slot moves; the delayed
-  // outputs are the count DECISION_DELAY = 3 clocks earlier.
+  // outputs are the count DECISION_DELAY = 4 clocks earlier.
   reg f_past_valid = 1'b0;
   reg f_rst_prev;
   reg [N+1:0] f_hyb_prev;
@@ -139,9 +144,10 @@ module prenc_position #(
   reg  [N+1:0] f_hyb_d1;
   reg  [N+1:0] f_hyb_d2;
   reg  [N+1:0] f_hyb_d3;
+  reg  [N+1:0] f_hyb_d4;
   reg  [2:0]   f_since_rst = 3'd0;
   always @(posedge clk) begin
-    {f_hyb_d3, f_hyb_d2, f_hyb_d1} <= {f_hyb_d2, f_hyb_d1, f_hyb};
+    {f_hyb_d4, f_hyb_d3, f_hyb_d2, f_hyb_d1} <= {f_hyb_d3, f_hyb_d2, f_hyb_d1, f_hyb};
     f_since_rst <= rst ? 3'd0 : (f_since_rst == 3'd7) ? 3'd7 : f_since_rst + 1'b1;
   end
   always @(*) begin
@@ -161,7 +167,7 @@ module prenc_position #(
       assert (ev_illegal == f_illegal_prev && ev_illegal_cw == f_cw_prev);
     end
     if (f_past_valid && !f_rst_prev) assert (quarter_reg == f_quarter_prev);
-    if (f_since_rst >= 3'd3) assert ({slot_out, quarter_out} == f_hyb_d3);
+    if (f_since_rst >= 3'd4) assert ({slot_out, quarter_out} == f_hyb_d4);
   end
   always @(posedge clk) begin
     if (f_past_valid && !rst) begin

@@ -26,6 +26,13 @@
 //             match; at SCORE_LIMIT the track stops supporting the position and goes
 //             back to raw mode, to be read anew. While the judge holds two hypotheses
 //             (dual), a reading where they predict different bits leaves the score.
+// Timing: the ports' event is registered and applied on the clock after, one clock
+// behind the count (prenc_core's latency 6 + FILTER), with what it selects (a count or
+// index move, a slide, a raw write, the base's step) and `demote` registered ahead of
+// it from the ports and the registers' next values: the word, the converter's address
+// and the base start from registers. rst also empties the registered event and puts
+// the base at HEAD_OFFSET: the count is reset with the track word (0 on every reset
+// clock but the first; the core holds rst for 4 clocks).
 // `addr` is the word after this clock, for the converter (a registered ROM read),
 // so the converted slot arrives with `word`. base = count - index + HEAD_OFFSET
 // makes `converted slot - base` the offset for either head.
@@ -45,6 +52,7 @@
 //   strobe, head             a mid-slot strobe and this head's reading
 //   up, down, illegal        the count moved (an illegal step may come with a move)
 //   slot                     the count after this clock's move
+//                            (these six: applied on the next clock)
 //   flush, law_on            from the judge: empty to raw mode / turn to law mode
 //   realign_up, realign_down from the judge: move the index one slot, on the first
 //                            clock without an event after the pulse (the other
@@ -192,24 +200,44 @@ module prenc_track_word #(
   wire bit_lo   = at_bottom ? inv_bit : |(word_reg & {at_index[N-2:0], 1'b0});
   wire bit_hi   = at_top ? fwd_bit : |(word_reg & {1'b0, at_index[N-1:1]});
 
+  // The ports' event is the next clock's: it is registered here (strobe_d ... slot_d)
+  // and applied on the clock after, one clock behind the count. What it selects (a
+  // count or index move, a slide, a raw write, the base's step) is registered with it,
+  // from the ports and the registers' next values (the *_ahead wires below), so that
+  // the word, the converter's address and the base start from registers.
+  reg         strobe_d;
+  reg         illegal_d;
+  reg         head_d;
+  reg [N-1:0] slot_d;
+  reg         idle_reg;
+  reg         ev_up_reg;
+  reg         ev_down_reg;
+  reg         idx_up_reg;
+  reg         idx_down_reg;
+  reg         slide_up_reg;
+  reg         slide_down_reg;
+  reg         write_raw_reg;
+  reg         base_inc_reg;
+  reg         base_dec_reg;
+
   // A realignment waits in pending_reg and takes the first clock without an event
   // after the judge's pulse.
-  wire       idle    = ~(up | down | strobe);
-  wire       ev_up   = up | (idle & pending_reg[1]);
-  wire       ev_down = down | (idle & pending_reg[0]);
+  wire       idle    = idle_reg;     // ~(up_d | down_d | strobe_d)
+  wire       ev_up   = ev_up_reg;    // up_d | (idle & pending_reg[1])
+  wire       ev_down = ev_down_reg;  // down_d | (idle & pending_reg[0])
 
   // Health, from last clock's comparison.
   // base = slot - index + HEAD_OFFSET, kept by steps: the count's move less the
   // index's, both at most one slot, so the sum is one of three values computed in
   // parallel from registers; a flush (or reset) puts the index at 0.
-  wire         idx_up   = ev_up & ~at_top;
-  wire         idx_down = ~ev_up & ev_down & ~at_bottom;
-  wire         base_inc = (up & ~idx_up) | (~up & ~down & idx_down);
-  wire         base_dec = (down & ~idx_down) | (~up & ~down & idx_up);
+  wire         idx_up   = idx_up_reg;    // ev_up & ~at_top
+  wire         idx_down = idx_down_reg;  // ~ev_up & ev_down & ~at_bottom
+  wire         base_inc = base_inc_reg;  // (up_d & ~idx_up) | (~up_d & ~down_d & idx_down)
+  wire         base_dec = base_dec_reg;  // (down_d & ~idx_down) | (~up_d & ~down_d & idx_up)
   wire         base_back  = base_dec & ~base_inc;  // (both only with up and down at once)
   wire [N-1:0] base_step  = base_reg + {{(N - 1){base_back}}, base_inc | base_dec};  // one adder
-  wire [N-1:0] base_home  = slot + HO32[N-1:0];
-  wire [N-1:0] base_next  = (rst | flush | demote) ? base_home : base_step;
+  wire [N-1:0] base_home  = slot_d + HO32[N-1:0];
+  wire [N-1:0] base_next  = rst ? HO32[N-1:0] : (flush | demote) ? base_home : base_step;
 
   wire [SW:0] score_plus = {1'b0, score_reg} + {1'b0, S_UP};
   reg  [SW-1:0] score_next;
@@ -232,18 +260,19 @@ module prenc_track_word #(
       end
     end
   end
-  wire demote = law_reg & (score_reg >= S_LIMIT);  // registered: off the score path
+  reg  demote_reg;
+  wire demote = demote_reg;  // law_reg & (score_reg >= S_LIMIT), registered ahead
 
   // The word changes in one of three ways (never two at once): a slide past the top
   // or the bottom, or a raw strobe's write (a strobe is never idle: no realignment).
   // Each way's word, its laws and &known are computed from registers, and the way is
   // chosen last: the next word goes to the converter's address.
-  wire slide_up   = ev_up & at_top;
-  wire slide_down = ~ev_up & ev_down & at_bottom;
-  wire write_raw  = strobe & ~up & ~down & ~law_reg;
+  wire slide_up   = slide_up_reg;    // ev_up & at_top
+  wire slide_down = slide_down_reg;  // ~ev_up & ev_down & at_bottom
+  wire write_raw  = write_raw_reg;   // strobe_d & ~up_d & ~down_d & ~law_reg
   wire [N-1:0] word_up    = {word_reg[N-2:0], fwd_bit};
   wire [N-1:0] word_down  = {inv_bit, word_reg[N-1:1]};
-  wire [N-1:0] word_write = (word_reg & ~at_index) | (at_index & {N{head}});
+  wire [N-1:0] word_write = (word_reg & ~at_index) | (at_index & {N{head_d}});
   wire [N-1:0] word_next  = slide_up ? word_up : slide_down ? word_down :
                             write_raw ? word_write : word_reg;
   // A slide keeps the law's own bit at the end it leaves: inv(word_up) is the bit
@@ -265,7 +294,7 @@ module prenc_track_word #(
                     slide_down ? ((&known_reg[N-1:1]) & (ext_lo_reg != {EW{1'b0}})) :
                     write_raw  ? (&(known_reg | at_index)) : (&known_reg);
 
-  wire        changed        = head ^ bit_here;
+  wire        changed        = head_d ^ bit_here;
   // A slide moves both ext counters one slot, opposite ways: one adder each.
   localparam [EW-1:0] E_ONE = 1;
   wire [EW-1:0] ext_lo_step  = ext_lo_reg + (ev_up ? E_ONE : {EW{1'b1}});  // +1 up, -1 down
@@ -281,30 +310,23 @@ module prenc_track_word #(
   reg [QW-1:0] quiet_next;
   always @* begin
     known_next   = known_reg;
-    at_index_next = at_index_reg;
+    at_index_next = idx_up ? {1'b0, at_index_reg[N-1:1]} :
+                    idx_down ? {at_index_reg[N-2:0], 1'b0} : at_index_reg;
     law_next     = law_reg;
     score_after  = score_next;
     pending_next = (idle ? 2'b00 : pending_reg) | {realign_up, realign_down};
     ext_lo_next  = ext_lo_reg;
     ext_hi_next  = ext_hi_reg;
     quiet_next   = quiet_law;
-    if (ev_up) begin
-      if (at_top) begin
-        known_next  = {known_reg[N-2:0], ext_hi_reg != {EW{1'b0}}};
-        ext_lo_next = !known_reg[N-1] ? {EW{1'b0}} : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
-        ext_hi_next = (ext_hi_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_hi_step;
-      end else begin
-        at_index_next = {1'b0, at_index_reg[N-1:1]};
-      end
-    end else if (ev_down) begin
-      if (at_bottom) begin
-        known_next  = {ext_lo_reg != {EW{1'b0}}, known_reg[N-1:1]};
-        ext_hi_next = !known_reg[0] ? {EW{1'b0}} : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
-        ext_lo_next = (ext_lo_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_lo_step;
-      end else begin
-        at_index_next = {at_index_reg[N-2:0], 1'b0};
-      end
-    end else if (strobe && !law_reg) begin
+    if (slide_up) begin
+      known_next  = {known_reg[N-2:0], ext_hi_reg != {EW{1'b0}}};
+      ext_lo_next = !known_reg[N-1] ? {EW{1'b0}} : (ext_lo_reg == E_MAX) ? E_MAX : ext_lo_step;
+      ext_hi_next = (ext_hi_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_hi_step;
+    end else if (slide_down) begin
+      known_next  = {ext_lo_reg != {EW{1'b0}}, known_reg[N-1:1]};
+      ext_hi_next = !known_reg[0] ? {EW{1'b0}} : (ext_hi_reg == E_MAX) ? E_MAX : ext_hi_step;
+      ext_lo_next = (ext_lo_reg == {EW{1'b0}}) ? {EW{1'b0}} : ext_lo_step;
+    end else if (write_raw) begin
       known_next = known_reg | at_index;
       if (changed) begin
         ext_lo_next = {EW{1'b0}};
@@ -316,7 +338,7 @@ module prenc_track_word #(
       ext_hi_next = {EW{1'b0}};
     end
     primed_next = primed_reg | full_after;
-    if (illegal && !law_reg) begin
+    if (illegal_d && !law_reg) begin
       // The readings are in doubt (the count may be a slot off), not the window's place.
       known_next  = {N{1'b0}};
       ext_lo_next = {EW{1'b0}};
@@ -338,6 +360,39 @@ module prenc_track_word #(
     end
   end
 
+  // The selects of the next clock, from the ports and the registers' next values.
+  wire [N-1:0] at_index_ahead = rst ? INDEX0 : at_index_next;
+  wire [1:0]   pending_ahead  = rst ? 2'b00 : pending_next;
+  wire         law_ahead      = ~rst & law_next;
+  wire [SW-1:0] score_ahead   = rst ? {SW{1'b0}} : score_after;
+  wire         top_ahead      = at_index_ahead[0];
+  wire         bottom_ahead   = at_index_ahead[N-1];
+  wire         strobe_ahead   = strobe & ~rst;  // the delayed event is reset with the rest
+  wire         up_ahead       = up & ~rst;
+  wire         down_ahead     = down & ~rst;
+  wire         idle_ahead     = ~(up_ahead | down_ahead | strobe_ahead);
+  wire         ev_up_ahead    = up_ahead | (idle_ahead & pending_ahead[1]);
+  wire         ev_down_ahead  = down_ahead | (idle_ahead & pending_ahead[0]);
+  wire         idx_up_ahead   = ev_up_ahead & ~top_ahead;
+  wire         idx_down_ahead = ~ev_up_ahead & ev_down_ahead & ~bottom_ahead;
+  always @(posedge clk) begin
+    strobe_d       <= strobe_ahead;
+    illegal_d      <= illegal & ~rst;
+    head_d         <= head & ~rst;
+    slot_d         <= rst ? {N{1'b0}} : slot;
+    idle_reg       <= idle_ahead;
+    ev_up_reg      <= ev_up_ahead;
+    ev_down_reg    <= ev_down_ahead;
+    idx_up_reg     <= idx_up_ahead;
+    idx_down_reg   <= idx_down_ahead;
+    slide_up_reg   <= ev_up_ahead & top_ahead;
+    slide_down_reg <= ~ev_up_ahead & ev_down_ahead & bottom_ahead;
+    write_raw_reg  <= strobe_ahead & ~up_ahead & ~down_ahead & ~law_ahead;
+    base_inc_reg   <= (up_ahead & ~idx_up_ahead) | (~up_ahead & ~down_ahead & idx_down_ahead);
+    base_dec_reg   <= (down_ahead & ~idx_down_ahead) | (~up_ahead & ~down_ahead & idx_up_ahead);
+    demote_reg     <= law_ahead & (score_ahead >= S_LIMIT);
+  end
+
   always @(posedge clk) begin
     word_reg        <= word_next;
     fwd_bit         <= fwd_next;
@@ -351,17 +406,17 @@ module prenc_track_word #(
     ext_hi_reg      <= ext_hi_next;
     primed_reg      <= primed_next;
     quiet_reg       <= quiet_next;
-    full_reg        <= full_after & ~(illegal & ~law_reg) & ~flush & ~demote;  // = &known_next
+    full_reg        <= full_after & ~(illegal_d & ~law_reg) & ~flush & ~demote;  // = &known_next
     supported_reg   <= law_next & (score_after < S_LIMIT);
-    raw_checked_reg <= strobe & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
+    raw_checked_reg <= strobe_d & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
     raw_changed_reg <= changed;
     steady_reg      <= ~(write_raw & changed) & ~(idle & (|pending_reg)) & ~flush & ~demote;
     base_reg        <= base_next;  // = slot - index_next + HEAD_OFFSET
-    strobe_reg      <= strobe;
-    checked_reg     <= strobe & law_reg;
-    mismatch_reg    <= strobe & law_reg & (head ^ bit_here);
-    mismatch_lo_reg <= strobe & law_reg & (head ^ bit_lo);
-    mismatch_hi_reg <= strobe & law_reg & (head ^ bit_hi);
+    strobe_reg      <= strobe_d;
+    checked_reg     <= strobe_d & law_reg;
+    mismatch_reg    <= strobe_d & law_reg & (head_d ^ bit_here);
+    mismatch_lo_reg <= strobe_d & law_reg & (head_d ^ bit_lo);
+    mismatch_hi_reg <= strobe_d & law_reg & (head_d ^ bit_hi);
     if (checked_reg && mismatch_reg && errors_reg != {ERROR_WIDTH{1'b1}}) begin
       errors_reg <= errors_reg + 1'b1;
     end
@@ -470,12 +525,14 @@ module prenc_track_word #(
   endfunction
   wire [IW-1:0] index_reg = f_index_of(at_index_reg);
   reg f_past_valid = 1'b0;
-  reg f_rst_prev;
+  reg f_rst_prev = 1'b0;
   reg [N-1:0] f_slot_prev;
+  reg [N-1:0] f_slot_d_prev;
   always @(posedge clk) begin
-    f_past_valid <= 1'b1;
-    f_rst_prev   <= rst;
-    f_slot_prev  <= slot;
+    f_past_valid  <= 1'b1;
+    f_rst_prev    <= rst;
+    f_slot_prev   <= slot;
+    f_slot_d_prev <= slot_d;
   end
   // A slide keeps the law's bit at the end it leaves (every word is a window, and
   // the registered laws are the word's since reset).
@@ -485,8 +542,14 @@ module prenc_track_word #(
     end
   end
   initial assume (rst);
-  // The core's count: it moves one slot with up or down, otherwise it holds.
+  // The core's count: it moves one slot with up or down, otherwise it holds; it is
+  // reset with the track word (prenc_position, the same rst), so it is 0 on every
+  // reset clock but the first, and a reset lasts two clocks at least (the core's, 4).
+  reg f_rst_prev2 = 1'b0;
+  always @(posedge clk) f_rst_prev2 <= f_rst_prev;
   always @(*) begin
+    if (f_past_valid && f_rst_prev && !f_rst_prev2) assume (rst);
+    if (f_past_valid && f_rst_prev && rst) assume (slot == {N{1'b0}});
     assume (!(up && down));
     if (f_past_valid) begin
       if (up) assume (slot == f_slot_prev + 1'b1);
@@ -508,12 +571,32 @@ module prenc_track_word #(
     f_index_prev <= index_reg;
     f_slide_up   <= ev_up && at_top;
     f_slide_down <= !ev_up && ev_down && at_bottom;
-    f_write      <= !ev_up && !ev_down && strobe && !law_reg;
-    f_head_prev  <= head;
-    f_clear_prev <= flush || demote || (illegal && !law_reg);
-    f_law_strobe <= strobe && law_reg;
+    f_write      <= !ev_up && !ev_down && strobe_d && !law_reg;
+    f_head_prev  <= head_d;
+    f_clear_prev <= flush || demote || (illegal_d && !law_reg);
+    f_law_strobe <= strobe_d && law_reg;
   end
   wire [N-1:0] f_here = f_p_prev + {{(N - IW){1'b0}}, f_index_prev};
+  // The registered selects are the applied event's, on the registers they act on.
+  reg up_d;
+  reg down_d;
+  always @(posedge clk) begin
+    up_d   <= up & ~rst;
+    down_d <= down & ~rst;
+  end
+  always @(*) begin
+    if (f_past_valid) begin
+      assert (idle == !(up_d || down_d || strobe_d));
+      assert (ev_up == (up_d || (idle && pending_reg[1])));
+      assert (ev_down == (down_d || (idle && pending_reg[0])));
+      assert (idx_up == (ev_up && !at_top) && idx_down == (!ev_up && ev_down && !at_bottom));
+      assert (slide_up == (ev_up && at_top) && slide_down == (!ev_up && ev_down && at_bottom));
+      assert (write_raw == (strobe_d && !up_d && !down_d && !law_reg));
+      assert (base_inc == ((up_d && !idx_up) || (!up_d && !down_d && idx_down)));
+      assert (base_dec == ((down_d && !idx_down) || (!up_d && !down_d && idx_up)));
+      assert (demote == (law_reg && score_reg >= S_LIMIT));
+    end
+  end
   always @(*) begin
     if (f_past_valid) begin
       assert (at_index_reg != {N{1'b0}} && (at_index_reg & (at_index_reg - 1'b1)) == {N{1'b0}});
@@ -526,7 +609,7 @@ module prenc_track_word #(
       // The laws, registered with the word: the disc's bits after and before it.
       assert (fwd_bit == f_bit(f_pos(word_reg) + N[N-1:0]));
       assert (inv_bit == f_bit(f_pos(word_reg) - 1'b1));
-      assert (base_reg == f_slot_prev - {{(N - IW){1'b0}}, index_reg} + HO32[N-1:0]);
+      assert (base_reg == f_slot_d_prev - {{(N - IW){1'b0}}, index_reg} + HO32[N-1:0]);
       if (f_slide_up) assert (word_reg == f_window(f_p_prev + 1'b1));
       if (f_slide_down) assert (word_reg == f_window(f_p_prev - 1'b1));
       if (!f_slide_up && !f_slide_down && !f_write) assert (f_pos(word_reg) == f_p_prev);
@@ -564,14 +647,14 @@ module prenc_track_word #(
     f_scored_prev       <= f_scored;
     f_dis_prev          <= f_dis;
     f_law_on_prev       <= law_on;
-    f_strobe_prev       <= strobe;
+    f_strobe_prev       <= strobe_d;
     f_clear_errors_prev <= clear_errors;
     f_count_error       <= checked && mismatch;
     f_score_prev        <= score_reg;
     f_quiet_prev        <= quiet_reg;
     f_errors_prev       <= errors_reg;
-    f_raw_read          <= strobe && !law_reg && !ev_up && !ev_down && primed_reg && !law_on;
-    f_raw_changed       <= head != in_order[index_reg];
+    f_raw_read          <= strobe_d && !law_reg && !ev_up && !ev_down && primed_reg && !law_on;
+    f_raw_changed       <= head_d != in_order[index_reg];
   end
   wire [SW:0]  f_score_up = {1'b0, f_score_prev} + {1'b0, S_UP};
   wire [6:0]   f_span_sum = {1'b0, ext_lo_reg} + {1'b0, ext_hi_reg};
@@ -622,11 +705,11 @@ module prenc_track_word #(
       f_rd  <= {f_rd[F_L-2:0], f_rd[F_L-1]};
       f_has <= {f_has[F_L-2:0], f_has[F_L-1]};
     end
-    if (!ev_up && !ev_down && strobe && !law_reg) begin
-      f_rd[slot]  <= head;
-      f_has[slot] <= 1'b1;
+    if (!ev_up && !ev_down && strobe_d && !law_reg) begin
+      f_rd[slot_d]  <= head_d;
+      f_has[slot_d] <= 1'b1;
     end
-    if (rst || flush || demote || (illegal && !law_reg)) f_has <= {F_L{1'b0}};
+    if (rst || flush || demote || (illegal_d && !law_reg)) f_has <= {F_L{1'b0}};
   end
   function automatic [1:0] f_read;  // {read since the last clear, last reading} at count c
     input [N-1:0] c;  // modulo 2^N

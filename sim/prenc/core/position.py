@@ -6,7 +6,7 @@ slot count and the event the rest of the core sees on that clock: `up` (a CW ste
 into q = 0), `down` (a CCW step into q = 3) or `illegal`. An illegal transition
 (A and B together) moved the disc two quarters; the count takes the pair of steps
 in the last legal direction (it moves a slot when that crosses a boundary) and the
-judge keeps the other way open. The count and quarter are also delayed three more
+judge keeps the other way open. The count and quarter are also delayed four more
 clocks, to meet the judge's decision: pos_abs = count + offset at one latency.
 """
 
@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from .quadrature import QuadratureOutput
 
-DECISION_DELAY = 3  # clocks from the event registers to the judge's registers
+DECISION_DELAY = 4  # clocks from the event registers to the judge's registers
 
 
 class Position:

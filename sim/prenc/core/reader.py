@@ -9,7 +9,8 @@ The stages, each the model of one RTL module, registered as in the RTL:
 
     pins -> InputConditioner -> QuadratureDecoder, and on the same edge
                                 Sampler (strobes, heads) and Position (count, events)
-         -> TrackWord x2 (one head each; raw or law mode) -> converter (the ROM)
+         -> TrackWord x2 (one head each; raw or law mode; each event a clock after
+            the count) -> converter (the ROM)
          -> J1 registers (offset of each track's window) -> ModeFsm (the judge)
          -> pos_abs = count (delayed) + offset, pos_valid, mode
 
@@ -38,7 +39,7 @@ from .track_word import SCORE_LIMIT, SCORE_UP, TrackEvent, TrackWord
 if TYPE_CHECKING:  # the virtual encoder feeds the model; the model does not need it
     from ..virtual.encoder import EncoderRun
 
-LATENCY = 5  # clocks from a pin to pos_abs / pos_valid, plus FILTER
+LATENCY = 6  # clocks from a pin to pos_abs / pos_valid, plus FILTER
 
 
 class Step(NamedTuple):
@@ -89,6 +90,7 @@ class Reader:
         self.conv_reg = conv_reg  # CONV_REG = 1: the judge gets the offsets of the clock before
         self.off_before = [0, 0]
         self.t_illegal = self.t_illegal_cw = 0
+        self.e_illegal = self.e_illegal_cw = 0
         self.clean = [0, 0, 0, 1]
         self.strobes = 0
 
@@ -115,7 +117,9 @@ class Reader:
                             head=s.head1 if h == 0 else s.head2)
             t.clock(ev, pos.slot, flush=flush[h], law_on=law_on[h], realign=realign,
                     dual=dual, dual_cw=dual_cw, rst=rst)
-        self.t_illegal, self.t_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
+        # The track words apply each event a clock after the count: so do its flags.
+        self.t_illegal, self.t_illegal_cw = int(self.e_illegal and not rst), self.e_illegal_cw
+        self.e_illegal, self.e_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
         self.strobes += s.strobe and not rst
         pos.clock(quad, rst=rst)
         self.sampler.clock(heads[0], heads[1], quad.step, quad.step_cw, quad.quarter,

@@ -29,6 +29,11 @@ disc's bits keeps holding them.
 
 Word value: the window's lowest count is the MSB, as w(p) on the disc, so the
 converter gives the disc slot of `base` (head 1) or of base + N - 1 (head 2).
+
+Timing: each event is applied on the clock after the one it comes on, a clock behind
+the count (the RTL registers it, with what it selects, ahead of the word); a reset
+also empties the waiting event and puts the base at the head offset (the count is
+reset with the track word).
 """
 
 from __future__ import annotations
@@ -75,7 +80,8 @@ class TrackEvent:
 
 class TrackWord:
     def __init__(self, code: Code, head_offset: int, score_up: int = SCORE_UP,
-                 score_limit: int = SCORE_LIMIT, ext_max: int | None = None, quiet_max: int | None = None):
+                 score_limit: int = SCORE_LIMIT, ext_max: int | None = None, quiet_max: int | None = None,
+                 event_delay: bool = True):
         self.code = code
         self.n = code.n
         self.mask = code.mask
@@ -107,6 +113,8 @@ class TrackWord:
         self.errors = 0
         self.addr = 0           # what the converter reads: the word after this clock
         self.realign = 0        # pending index move after a hypothesis change: 0, +1 or -1
+        self.event_delay = event_delay  # False: apply each event on its own clock (not the RTL)
+        self.ahead = (TrackEvent(), 0)  # the ports' event and slot, applied on the next clock
 
     def bit(self, word: int, i: int) -> int:
         return (word >> (self.n - 1 - i)) & 1
@@ -135,9 +143,15 @@ class TrackWord:
     def clock(self, ev: TrackEvent, slot: int, flush: int = 0, law_on: int = 0, realign: int = 0,
               dual: int = 0, dual_cw: int = 0,
               rst: int = 0, error_max: int = 0xFFFF, clear_errors: int = 0) -> None:
-        """One rising edge. `slot` is the slot count after this clock's move. `realign`
-        (+1 / -1) moves the index one slot, on the first clock without an event after
-        this one."""
+        """One rising edge. `ev` and `slot` (the slot count after the event's move) are
+        registered and applied on the next edge, one clock behind the count (the RTL
+        registers what they select ahead of it); this edge applies the last ones.
+        `realign` (+1 / -1) moves the index one slot, on the first clock without an
+        event after this one."""
+        if self.event_delay:  # the RTL resets the delayed event, and the base to HEAD_OFFSET
+            (ev, slot), self.ahead = self.ahead, ((TrackEvent(), 0) if rst else (ev, slot))
+            if rst:
+                slot = 0
         n, word, known, index, law = self.n, self.word, self.known, self.index, self.law
         pending = self.realign  # the judge's pulse waits a clock in the register
         moved_off = 0  # a realignment moves the window against the count: the offset moves

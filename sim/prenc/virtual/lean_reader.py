@@ -152,6 +152,7 @@ class LeanReader(Reader):
         ext_max = max(self.fsm.lock_one, self.fsm.lock_both) - 1 + self.fsm.lock_extra
         self.tracks = [LeanTrack(code, 0, ext_max), LeanTrack(code, code.n - 1, ext_max)]
         self.t_slot = 0
+        self.ahead = (0, 0, 0, (0, 0), 0, 0, 0)  # the front end's event, for the next clock
 
     def _core(self, quad: QuadratureOutput, heads: Sequence[int], rst: int) -> None:
         f, tracks, pos, s = self.fsm, self.tracks, self.position, self.sampler.out
@@ -162,11 +163,15 @@ class LeanReader(Reader):
                                        self.t_slot)
         if rst:
             self.j1 = JudgeInput()
+        # The tracks take each event a clock after the count, as the core's track words do.
+        now = (s.strobe, s.cw, s.moved, (s.head1, s.head2), pos.slot, int(pos.illegal and not rst),
+               pos.illegal_cw)
+        (strobe, cw, moved, heads_e, slot, illegal, illegal_cw), self.ahead = self.ahead, now
         for h, t in enumerate(tracks):
-            t.clock(s.strobe, s.cw, s.moved, s.head1 if h == 0 else s.head2, pos.slot, pos.illegal, offset,
+            t.clock(strobe, cw, moved, heads_e[h], slot, illegal, offset,
                     flush=flush[h], law_on=law_on[h], dual=dual, dual_cw=dual_cw, rst=rst)
-        self.t_illegal, self.t_illegal_cw = int(pos.illegal and not rst), pos.illegal_cw
-        self.t_slot = pos.slot
+        self.t_illegal, self.t_illegal_cw = int(illegal and not rst), illegal_cw
+        self.t_slot = slot
         self.strobes += s.strobe and not rst
         pos.clock(quad, rst=rst)
         self.sampler.clock(heads[0], heads[1], quad.step, quad.step_cw, quad.quarter,

@@ -40,7 +40,9 @@ class PlainReader:
         self.quadrature = QuadratureDecoder()
         self.sampler = Sampler(head_delay=False)  # the core's front end, at its latency
         self.position = Position(code.n)
-        self.tracks = [TrackWord(code, 0), TrackWord(code, code.n - 1)]
+        # Each event on its own clock, as the plain reader has always taken them.
+        self.tracks = [TrackWord(code, 0, event_delay=False),
+                       TrackWord(code, code.n - 1, event_delay=False)]
         self.clean = [0, 0, 0, 1]
         self.locked = 0
         self.offset = 0

@@ -51,7 +51,7 @@ def test_start_up_from_both_heads_takes_n_plus_1_strobes():
 
 def clocked_track(n: int = 6) -> tuple[Code, TrackWord]:
     code = Code(n)
-    return code, TrackWord(code, 0, ext_max=n + 1)
+    return code, TrackWord(code, 0, ext_max=n + 1, event_delay=False)  # the rules, not the timing
 
 
 def feed(code: Code, t: TrackWord, slots, bit_of) -> None:
@@ -167,11 +167,13 @@ def test_steady_means_the_offset_did_not_move():
     seq = [int(b) for b in code.sequence]
     for head_offset in (0, code.n - 1):
         t = TrackWord(code, head_offset)
-        slot, steady_seen, moved_seen = 40, 0, 0
+        slot, steady_seen, moved_seen = 0, 0, 0  # the count is reset with the track word
         off_before = None
         for k in range(20_000):
             kind = rng.choice(["strobe", "up", "down", "idle", "flush", "realign", "illegal"],
                               p=[0.45, 0.2, 0.2, 0.08, 0.01, 0.04, 0.02])
+            if k < 2:
+                kind = "idle"  # reset: the count is reset with the track word
             ev, flush, realign = TrackEvent(), 0, 0
             if kind == "up":
                 slot = (slot + 1) & code.mask

@@ -6,7 +6,8 @@
 // quarter every DWELL clocks; head 1 reads s(p), head 2 s(p + N - 1), the sync track
 // A/B the quarter. The core must give its first valid position within N + 2 slots of
 // travel, every valid pos_hyb must be the disc's hybrid position at the core's latency
-// (6 + FILTER clocks after the pins), and the position must be valid at the end of
+// (7 + FILTER clocks after the pins: the edge that samples them, then the core's
+// 6 + FILTER), and the position must be valid at the end of
 // each way. Any failure stops with $fatal (exit status 1); success prints PASS.
 `resetall
 `timescale 1ns / 1ps
@@ -19,7 +20,7 @@ module prenc_core_smoke #(
 );
 
   localparam integer FILTER  = 2;
-  localparam integer LATENCY = 6 + FILTER;
+  localparam integer LATENCY = 7 + FILTER;
   localparam integer DWELL   = 6;
   localparam integer SLOTS   = 40;
   localparam integer START   = 4 * 100 + 1;

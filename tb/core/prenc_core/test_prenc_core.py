@@ -5,7 +5,7 @@ acceleration, each fault of the datasheet alone and combined).
 
 Two independent expectations, neither from the RTL:
 - the truth: whenever pos_valid is 1, pos_hyb (and pos_abs) equal the true
-  position 5 + FILTER clocks earlier (prenc.virtual.scenarios.judge: within FILTER clocks
+  position 6 + FILTER clocks earlier (prenc.virtual.scenarios.judge: within FILTER clocks
   of it, as the filter removes true pulses shorter than FILTER, and within the
   clocks a fault on A or B held the pins off the truth);
 - the clock-level model prenc.core.reader.Reader: on every clock the same pos_valid and
