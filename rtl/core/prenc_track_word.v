@@ -227,7 +227,7 @@ module prenc_track_word #(
   wire       ev_down = ev_down_reg;  // down_d | (idle & pending_reg[0])
 
   // Health, from last clock's comparison.
-  // base = slot - index + HEAD_OFFSET, kept by steps: the count's move less the
+  // base = slot_d - index + HEAD_OFFSET, kept by steps: the count's move less the
   // index's, both at most one slot, so the sum is one of three values computed in
   // parallel from registers; a flush (or reset) puts the index at 0.
   wire         idx_up   = idx_up_reg;    // ev_up & ~at_top
@@ -411,7 +411,7 @@ module prenc_track_word #(
     raw_checked_reg <= strobe_d & ~law_reg & ~ev_up & ~ev_down & primed_reg & ~law_on;
     raw_changed_reg <= changed;
     steady_reg      <= ~(write_raw & changed) & ~(idle & (|pending_reg)) & ~flush & ~demote;
-    base_reg        <= base_next;  // = slot - index_next + HEAD_OFFSET
+    base_reg        <= base_next;  // = slot_d - index_next + HEAD_OFFSET
     strobe_reg      <= strobe_d;
     checked_reg     <= strobe_d & law_reg;
     mismatch_reg    <= strobe_d & law_reg & (head_d ^ bit_here);
