@@ -127,6 +127,8 @@ module prenc_uart_rx #(
   // 2. It accepts a good byte then: a byte sent after that idle time, at the exact
   //    bit time, is received with its value, once; the same byte with a low stop bit
   //    is a framing error, once, and no byte.
+  // 3. After a framing error it waits while the line stays low (a break): no byte, no
+  //    error, not busy, until the line is high again.
   localparam integer F_IDLE = 2 + 10 * CLKS_PER_BIT;   // clocks of high line
   localparam integer F_END  = 10 * CLKS_PER_BIT + 4;   // a byte's frame and the latency
   reg        f_past_valid = 1'b0;
@@ -213,8 +215,18 @@ module prenc_uart_rx #(
       end
     end
   end
+  // 3: f_break = a framing error, and the line low (as the receiver saw it) since.
+  reg f_break = 1'b0;
+  always @(posedge clk) f_break <= !rst && (frame_error || f_break) && !rx_q2;
+  always @(*) begin
+    if (f_past_valid && !f_rst_prev) begin
+      if (frame_error) assert (state == BREAK);
+      if (f_break) assert (state == BREAK && !valid && !frame_error);
+    end
+  end
   always @(posedge clk) begin
     if (f_past_valid && !rst) cover (f_sending && f_t == F_END);
+    if (f_past_valid && !rst) cover (f_break && rx_q2);  // a break that ends
   end
 `endif
 
