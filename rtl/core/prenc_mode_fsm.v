@@ -33,6 +33,9 @@
 // span against the lock depths, full and settled, the votes, whether the slot is
 // fresh, and the slot relative to the transition (its subtraction two clocks ahead,
 // from slot_ahead2). The decisions equal those on the J1 values (same model).
+// The decisions are written out once for each value of dual_reg, which chooses last,
+// and the offsets' comparisons choose after it: the comparisons reach only the
+// no-hypotheses case (g_case[0]) and the votes only the other.
 // The arithmetic behind LOCK_BOTH / LOCK_ONE: docs/architecture.md.
 // Model: prenc.mode_fsm.ModeFsm (decisions registered; flush, law_on and realign are
 // one-clock pulses to the track words).
@@ -165,7 +168,6 @@ module prenc_mode_fsm #(
   reg [1:0]          realign_reg;  // {up, down}
 
   wire valid_now = (mode_reg == NORMAL) | (mode_reg == REDUCED_1) | (mode_reg == REDUCED_2);
-  wire locked    = valid_now | dual_reg;
   // What the tracks will be once last clock's pulses land.
   wire [1:0] sup    = (supported & ~flush_reg) | law_on_reg;
   wire [1:0] lawish = (law & ~flush_reg) | law_on_reg;
@@ -262,16 +264,6 @@ module prenc_mode_fsm #(
   end
   // Fresh (outside the slots visited since the transition), also one clock ahead:
   // against the interval as this clock's event leaves it.
-  // An illegal transition that opens the two hypotheses (HYPOTHESES = 0: none, and
-  // dual_reg stays 0, so synthesis drops all that follows from it).
-  wire enter;
-  generate
-    if (HYPOTHESES == 1) begin : g_enter
-      assign enter = illegal & valid_now & ~dual_reg & (sup == 2'b11);
-    end else begin : g_no_enter
-      assign enter = 1'b0;
-    end
-  endgenerate
   // The four comparisons kept as nets, each its own carry chain (merged, ABC made
   // them ten LUT levels deep).
   (* keep *) wire widen;
@@ -334,110 +326,136 @@ module prenc_mode_fsm #(
   reg [DUAL_VOTES-1:0] votes_keep_next;
   reg [DUAL_VOTES-1:0] votes_other_next;
   reg [3:0]           voted_next;
-  reg [1:0]           law_on_held;
-  reg [1:0]           realign_next;
-  reg                 drop;  // the offset is dropped (flush, INCREMENTAL)
-  reg                 won;   // a hypothesis won: the modes resume from support
-
   // A lock on a strobe while no offset is held: which tracks, and the mode it gives,
   // from registers for either outcome of the offsets' comparison, which then chooses.
   // Where the offsets agree either is the lock's; where not, the one head that locks.
-  wire       lock_try      = ~illegal & strobe & ~locked & ~blocked;
-  wire       lock_now      = lock_try & (agree12 ? lock_agree : lock_alone);
   wire       one1_apart    = alone[0] & ~ready[1];
-  wire [1:0] law_on_agree  = ~lock_try ? 2'b00 : both_deep ? 2'b11 :
-                             alone[0] ? 2'b01 : alone[1] ? 2'b10 : 2'b00;
-  wire [1:0] law_on_apart  = ~lock_try ? 2'b00 : one1_apart ? 2'b01 :
-                             (alone[1] & ~ready[0]) ? 2'b10 : 2'b00;
-  wire [2:0] mode_agree    = ~(lock_try & lock_agree) ? mode_reg : both_deep ? NORMAL :
-                             alone[0] ? REDUCED_1 : REDUCED_2;
-  wire [2:0] mode_apart    = ~(lock_try & lock_alone) ? mode_reg :
-                             one1_apart ? REDUCED_1 : REDUCED_2;
-  wire [N-1:0] lock_offset = (~alone[0] & alone[1]) ? off2 : off1;
+  wire       lock_off2     = ~alone[0] & alone[1];
+  wire [N-1:0] lock_offset = lock_off2 ? off2 : off1;
   // A raw track whose full word converts to the held offset rejoins (law mode).
   wire [1:0] rejoin      = {full[1] & ~lawish[1] & on2, full[0] & ~lawish[0] & on1};
 
-  // The events of this clock: what they decide. The mode follows below from the
-  // decisions in one flat expression (few logic levels to mode_reg).
+  // The hypothesis state: outside dual held at its starting values (the event's way
+  // and slot, nothing visited, no votes), ready for a transition judged now; in dual a
+  // fresh reading (widen) widens the interval and adds its votes.
   always @* begin
-    // Outside dual the hypothesis state is held at its starting values (the event's
-    // way and slot, nothing visited, no votes), ready for a transition judged now.
     dual_cw_next     = dual_cw_ahead;
     anchor_next      = anchor_next_w;
-    lo_next          = dual_reg ? lo_reg : 1;
-    hi_next          = dual_reg ? hi_reg : 0;
-    votes_keep_next  = dual_reg ? votes_keep_reg : {DUAL_VOTES{1'b0}};
-    votes_other_next = dual_reg ? votes_other_reg : {DUAL_VOTES{1'b0}};
-    voted_next       = dual_reg ? voted_reg : 4'd0;
-    law_on_held      = 2'b00;
-    realign_next     = 2'b00;
-    drop             = 1'b0;
-    won              = 1'b0;
-    if (illegal) begin
-      // enter (below) opens the two hypotheses; otherwise a held offset drops.
-      drop = locked & ~enter;
-    end else if (strobe && !locked) begin
-      // A lock (lock_now, below), chosen by the offsets' comparison.
-    end else if (strobe && !dual_reg) begin
-      law_on_held = rejoin;
-    end else if (strobe) begin
-      if (far) begin
-        drop = 1'b1;
-      end else if (fresh) begin
-        lo_next          = below_lo ? rel : lo_reg;
-        hi_next          = above_hi ? rel : hi_reg;
-        votes_keep_next  = keep_new;
-        votes_other_next = other_new;
-        voted_next       = voted_new;
-        if (keep_new[0] && other_new[0]) begin
-          drop = 1'b1;
-        end else if (keep_new[DUAL_VOTES-1] && voted_new[0] && voted_new[1]) begin
-          won = 1'b1;
-        end else if (other_new[DUAL_VOTES-1] && voted_new[2] && voted_new[3]) begin
-          // The other way: the count is one slot off; the offset takes it.
-          won          = 1'b1;
-          realign_next = dual_cw_reg ? 2'b01 : 2'b10;
-        end
-      end
-    end
+    lo_next          = ~dual_reg ? 1 : (widen & below_lo) ? rel : lo_reg;
+    hi_next          = ~dual_reg ? 0 : (widen & above_hi) ? rel : hi_reg;
+    votes_keep_next  = ~dual_reg ? {DUAL_VOTES{1'b0}} : widen ? keep_new : votes_keep_reg;
+    votes_other_next = ~dual_reg ? {DUAL_VOTES{1'b0}} : widen ? other_new : votes_other_reg;
+    voted_next       = ~dual_reg ? 4'd0 : widen ? voted_new : voted_reg;
   end
 
-  // Modes from support, every clock, while the offset stands: the support of this
-  // clock with the tracks that rejoin now (a lock or a won hypothesis adds none).
-  wire [1:0] support_now = sup | ((~illegal & strobe & locked & ~dual_reg) ? rejoin : 2'b00);
-  wire [2:0] s_mode      = (support_now == 2'b11) ? NORMAL :
-                           (support_now == 2'b01) ? REDUCED_1 :
-                           (support_now == 2'b10) ? REDUCED_2 : INCREMENTAL;
-  // Two hypotheses stay open (or open now) while both tracks support the offset.
-  wire       dual_keep   = (illegal & enter) | (dual_reg & ~won);
-  wire       dual_next;
+  // The decisions, written once for each value of dual_reg (g_case[0]: no hypotheses
+  // open, g_case[1]: two open), and dual_reg chooses last: the offsets' comparisons
+  // (agree12, on1, on2) reach only the first, whose logic is that of HYPOTHESES = 0
+  // with `enter`, and the votes only the second.
+  wire [2:0] mode_ca  [0:1];  // per case: the mode if the offsets agree / are apart
+  wire [2:0] mode_cp  [0:1];
+  wire [1:0] law_ca   [0:1];
+  wire [1:0] law_cp   [0:1];
+  wire       dual_n_c [0:1];
+  wire       flush_c  [0:1];
+  wire       en_ca    [0:1];  // the offset loads (if they agree / are apart)
+  wire       en_cp    [0:1];
+  wire [1:0] realign_c[0:1];
+  genvar gd;
   generate
-    if (HYPOTHESES == 1) begin : g_dual_next
-      assign dual_next = dual_keep & ~drop & (sup == 2'b11);
-    end else begin : g_no_dual_next
-      assign dual_next = 1'b0;
+    for (gd = 0; gd < 2; gd = gd + 1) begin : g_case
+      wire       d_now    = (gd == 1);
+      wire       locked_c = valid_now | d_now;
+      wire       lock_try = ~illegal & strobe & ~locked_c & ~blocked;
+      wire [1:0] law_on_agree = ~lock_try ? 2'b00 : both_deep ? 2'b11 :
+                                alone[0] ? 2'b01 : alone[1] ? 2'b10 : 2'b00;
+      wire [1:0] law_on_apart = ~lock_try ? 2'b00 : one1_apart ? 2'b01 :
+                                (alone[1] & ~ready[0]) ? 2'b10 : 2'b00;
+      wire [2:0] mode_agree   = ~(lock_try & lock_agree) ? mode_reg : both_deep ? NORMAL :
+                                alone[0] ? REDUCED_1 : REDUCED_2;
+      wire [2:0] mode_apart   = ~(lock_try & lock_alone) ? mode_reg :
+                                one1_apart ? REDUCED_1 : REDUCED_2;
+      // An illegal transition that opens the two hypotheses (HYPOTHESES = 0: none, and
+      // dual_reg stays 0, so synthesis drops all that follows from it).
+      wire       enter = (HYPOTHESES == 1) & illegal & valid_now & ~d_now & (sup == 2'b11);
+      reg  [1:0] law_on_held;
+      reg  [1:0] realign_next;
+      reg        drop;  // the offset is dropped (flush, INCREMENTAL)
+      reg        won;   // a hypothesis won: the modes resume from support
+      always @* begin
+        law_on_held  = 2'b00;
+        realign_next = 2'b00;
+        drop         = 1'b0;
+        won          = 1'b0;
+        if (illegal) begin
+          // enter opens the two hypotheses; otherwise a held offset drops.
+          drop = locked_c & ~enter;
+        end else if (strobe && !locked_c) begin
+          // A lock (lock_try, above), chosen by the offsets' comparison.
+        end else if (strobe && !d_now) begin
+          law_on_held = rejoin;
+        end else if (strobe) begin
+          if (far) begin
+            drop = 1'b1;
+          end else if (fresh) begin
+            if (keep_new[0] && other_new[0]) begin
+              drop = 1'b1;
+            end else if (keep_new[DUAL_VOTES-1] && voted_new[0] && voted_new[1]) begin
+              won = 1'b1;
+            end else if (other_new[DUAL_VOTES-1] && voted_new[2] && voted_new[3]) begin
+              // The other way: the count is one slot off; the offset takes it.
+              won          = 1'b1;
+              realign_next = dual_cw_reg ? 2'b01 : 2'b10;
+            end
+          end
+        end
+      end
+      // Modes from support, every clock, while the offset stands: the support of this
+      // clock with the tracks that rejoin now (a lock or a won hypothesis adds none).
+      wire [1:0] support_now = sup | ((~illegal & strobe & locked_c & ~d_now) ? rejoin : 2'b00);
+      wire [2:0] s_mode      = (support_now == 2'b11) ? NORMAL :
+                               (support_now == 2'b01) ? REDUCED_1 :
+                               (support_now == 2'b10) ? REDUCED_2 : INCREMENTAL;
+      // Two hypotheses stay open (or open now) while both tracks support the offset.
+      wire       dual_keep = (illegal & enter) | (d_now & ~won);
+      // (A lock needs no offset held, resume one held: never both.)
+      wire       resume    = ~drop & ~dual_keep & (valid_now | won);
+      wire [2:0] mode_held = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
+      assign mode_ca[gd]   = locked_c ? mode_held : mode_agree;
+      assign mode_cp[gd]   = locked_c ? mode_held : mode_apart;
+      assign law_ca[gd]    = locked_c ? law_on_held : law_on_agree;
+      assign law_cp[gd]    = locked_c ? law_on_held : law_on_apart;
+      assign dual_n_c[gd]  = (HYPOTHESES == 1) & dual_keep & ~drop & (sup == 2'b11);
+      assign flush_c[gd]   = drop | (dual_keep & (sup != 2'b11)) |
+                             (resume & (support_now == 2'b00));
+      assign en_ca[gd]     = (lock_try & lock_agree) | (realign_next != 2'b00);
+      assign en_cp[gd]     = (lock_try & lock_alone) | (realign_next != 2'b00);
+      assign realign_c[gd] = realign_next;
     end
   endgenerate
-  // (A lock needs no offset held, resume one held: never both.)
-  wire       resume      = ~drop & ~dual_keep & (valid_now | won);
-  wire [2:0] mode_held   = (drop | dual_keep) ? INCREMENTAL : resume ? s_mode : mode_reg;
   // For either outcome of the offsets' comparison, kept as nets so that it is the
-  // last input (one LUT level) of the mode and law_on.
+  // last input (one LUT level) of the mode, law_on and the offset's enable.
   (* keep *) wire [2:0] mode_if_agree;
-  assign mode_if_agree = locked ? mode_held : mode_agree;
+  assign mode_if_agree = dual_reg ? mode_ca[1] : mode_ca[0];
   (* keep *) wire [2:0] mode_if_apart;
-  assign mode_if_apart = locked ? mode_held : mode_apart;
+  assign mode_if_apart = dual_reg ? mode_cp[1] : mode_cp[0];
   (* keep *) wire [1:0] law_on_if_agree;
-  assign law_on_if_agree = locked ? law_on_held : law_on_agree;
+  assign law_on_if_agree = dual_reg ? law_ca[1] : law_ca[0];
   (* keep *) wire [1:0] law_on_if_apart;
-  assign law_on_if_apart = locked ? law_on_held : law_on_apart;
-  wire [2:0] mode_next   = agree12 ? mode_if_agree : mode_if_apart;
-  wire [1:0] law_on_next = agree12 ? law_on_if_agree : law_on_if_apart;
+  assign law_on_if_apart = dual_reg ? law_cp[1] : law_cp[0];
+  wire [2:0] mode_next    = agree12 ? mode_if_agree : mode_if_apart;
+  wire [1:0] law_on_next  = agree12 ? law_on_if_agree : law_on_if_apart;
+  (* keep *) wire offset_en_if_agree;
+  assign offset_en_if_agree = dual_reg ? en_ca[1] : en_ca[0];
+  (* keep *) wire offset_en_if_apart;
+  assign offset_en_if_apart = dual_reg ? en_cp[1] : en_cp[0];
+  wire       offset_en    = agree12 ? offset_en_if_agree : offset_en_if_apart;
+  wire       dual_next    = dual_reg ? dual_n_c[1] : dual_n_c[0];
+  wire [1:0] realign_next = dual_reg ? realign_c[1] : realign_c[0];
   // The offset: a lock's (outside dual), or the other hypothesis's when it wins (in dual).
-  wire         offset_en   = lock_now | (realign_next != 2'b00);
   wire [N-1:0] offset_load = dual_reg ? offset_reg + {{(N - 1){dual_cw_reg}}, 1'b1} :  // -1 CW
                                         lock_offset;                                   // +1 CCW
-  wire       flush_all   = drop | (dual_keep & (sup != 2'b11)) | (resume & (support_now == 2'b00));
+  wire       flush_all    = dual_reg ? flush_c[1] : flush_c[0];
   wire [1:0] flush_next  = {flush_all, flush_all};
 
   always @(posedge clk) begin
