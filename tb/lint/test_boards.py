@@ -115,3 +115,17 @@ def test_synth_rejects_a_malformed_parameter(argv, capsys):
         synth.main(argv)
     assert stop.value.code == 2
     assert "--param" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv", [["--core", "ice40-hx8k", "--seeds", "1,x"],
+                                  ["--core", "ice40-hx8k", "--seeds", "2,2"],
+                                  ["--core", "ice40-hx8k", "--seeds", "-1"],
+                                  ["--core", "ice40-hx8k", "--seeds", ""],
+                                  ["--board", "icebreaker", "--seeds", "1,2"]])
+def test_synth_rejects_malformed_seeds(argv, capsys):
+    """A seed list that is not distinct non-negative integers, or seeds for a board
+    build, stops before any synthesis with a message naming --seeds."""
+    with pytest.raises(SystemExit) as stop:
+        synth.main(argv)
+    assert stop.value.code == 2
+    assert "--seeds" in capsys.readouterr().err
