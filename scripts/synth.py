@@ -379,26 +379,35 @@ def main(argv: list[str] | None = None) -> int:
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
-    fmax = []
+    # One seed: a missed timing is an error at once. Several: every seed is placed and
+    # reported, and a seed that missed timing makes the exit status 1 at the end.
+    sweep = len(seeds) > 1
+    fmax, missed = [], []
     for seed in seeds:
-        where = out if len(seeds) == 1 else out / f"seed{seed}"
+        where = out / f"seed{seed}" if sweep else out
         try:
             if args.board:
                 result = board_build(BOARDS[args.board], args.bits, where, args.baud)
             else:
                 result = core_build(args.core, args.bits, args.freq, where, top=args.top, parameters=extra,
-                                    seed=seed)
+                                    seed=seed, require_timing=not sweep)
         except (FlowError, ValueError) as err:
             print(f"synth: error: {err}", file=sys.stderr)
             return 1
         write_report(result, where)
-        print(summary(result) + (f"  (seed {seed})" if len(seeds) > 1 else ""))
+        print(summary(result) + (f"  (seed {seed})" if sweep else ""))
         print(f"  report: {rel(where / 'report.md')}  ({result.seconds:.0f} s)")
         if result.clocks:
             fmax.append(min(c["achieved"] for c in result.clocks.values()))
-    if len(fmax) > 1:
+        if not result.timing_met:
+            missed.append(seed)
+    if sweep:
         print(f"mean Fmax over seeds {args.seeds}: {sum(fmax) / len(fmax):.1f} MHz "
-              f"({min(fmax):.1f} to {max(fmax):.1f})")
+              f"({min(fmax):.1f} to {max(fmax):.1f})" if fmax else "no clock reported")
+        if missed:
+            print(f"synth: error: timing missed at seed(s) {', '.join(map(str, missed))} "
+                  f"(constraint {args.freq:g} MHz)", file=sys.stderr)
+            return 1
     return 0
 
 

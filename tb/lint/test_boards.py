@@ -117,6 +117,18 @@ def test_synth_rejects_a_malformed_parameter(argv, capsys):
     assert "--param" in capsys.readouterr().err
 
 
+def test_a_seed_sweep_reports_every_seed_then_fails_on_a_missed_clock(capsys):
+    """`--seeds 1,2` places the core twice, each in its own folder, and prints both
+    and their mean; a clock neither seed can meet (500 MHz) is an error only after
+    both are reported, naming both seeds."""
+    out = SIM_BUILD / "boards" / "core-seed-sweep"
+    code = synth.main(["--core", "ice40-hx8k", "--seeds", "1,2", "--freq", "500", "--out", str(out)])
+    printed = capsys.readouterr()
+    assert code == 1
+    assert (out / "seed1" / "report.md").exists() and (out / "seed2" / "report.md").exists()
+    assert "(seed 1)" in printed.out and "(seed 2)" in printed.out
+    assert "mean Fmax over seeds 1,2" in printed.out
+    assert "seed(s) 1, 2" in printed.err
 @pytest.mark.parametrize("argv", [["--core", "ice40-hx8k", "--seeds", "1,x"],
                                   ["--core", "ice40-hx8k", "--seeds", "2,2"],
                                   ["--core", "ice40-hx8k", "--seeds", "-1"],
