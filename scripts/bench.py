@@ -159,9 +159,9 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 r = synth.core_build(target, n, aim, out, require_timing=False, top=top)
                 line = _synth_line(synth, r)
                 if n == 10:  # the placer's seed moves Fmax by several per cent: seeds 1 to 3
-                    fmax = [_fmax(r)] + [_fmax(synth.core_build(target, n, aim, out.with_name(f"{out.name}-seed{s}"),
-                                                                require_timing=False, top=top, seed=s))
-                                         for s in (2, 3)]
+                    fmax = [r.fmax] + [synth.core_build(target, n, aim, out.with_name(f"{out.name}-seed{s}"),
+                                                        require_timing=False, top=top, seed=s).fmax
+                                       for s in (2, 3)]
                     line += f"; seeds 1-3: {min(fmax):.1f} to {max(fmax):.1f} MHz"
                     if target == "ice40-hx8k":
                         hx8k_lc = r.used(t.logic)[0]
@@ -194,7 +194,7 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                                      seed=s, parameters={"CONV_REG": 1}) for s in seeds]
             line = _synth_line(synth, runs[0])
             if len(runs) > 1:
-                fmax = [_fmax(r) for r in runs]
+                fmax = [r.fmax for r in runs]
                 line += f"; seeds 1-{len(runs)}: {min(fmax):.1f} to {max(fmax):.1f} MHz"
             rows.append((what, 10, line))
         except synth.FlowError as err:
@@ -224,10 +224,6 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
             except synth.FlowError as err:
                 rows.append((f"{name} board top", n, f"FAILED: {err}"))
     return rows
-
-
-def _fmax(r) -> float:
-    return next(iter(r.clocks.values()))["achieved"]
 
 
 def _synth_line(synth, r) -> str:

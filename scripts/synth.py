@@ -107,6 +107,11 @@ class Result:
     seconds: float = 0.0
 
     @property
+    def fmax(self) -> float | None:
+        """The slowest clock's achieved frequency, MHz (None without a placed clock)."""
+        return min((c["achieved"] for c in self.clocks.values()), default=None)
+
+    @property
     def timing_met(self) -> bool:
         return bool(self.clocks) and all(c["achieved"] >= c["constraint"] for c in self.clocks.values())
 
@@ -397,8 +402,8 @@ def main(argv: list[str] | None = None) -> int:
         write_report(result, where)
         print(summary(result) + (f"  (seed {seed})" if sweep else ""))
         print(f"  report: {rel(where / 'report.md')}  ({result.seconds:.0f} s)")
-        if result.clocks:
-            fmax.append(min(c["achieved"] for c in result.clocks.values()))
+        if result.fmax is not None:
+            fmax.append(result.fmax)
         if not result.timing_met:
             missed.append(seed)
     if sweep:
