@@ -33,7 +33,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from synth import REPO, TARGETS, FlowError, core_build, core_parameters, file_list, list_file, rel  # noqa: E402
+from synth import (REPO, TARGETS, FlowError, core_build, core_parameters, file_list, list_file,  # noqa: E402
+                   placer_seeds, rel)
 
 ROWS = {
     "core": (),
@@ -114,7 +115,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", type=Path, default=REPO / "build" / "ceiling")
     args = parser.parse_args(argv)
     try:
-        seeds = [int(s) for s in args.seeds.split(",")]
+        seeds = placer_seeds(args.seeds)
         parameters = core_parameters(args.param)
     except ValueError as err:
         parser.error(str(err))

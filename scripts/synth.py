@@ -309,6 +309,14 @@ def core_parameters(items: list[str]) -> dict[str, int]:
     return extra
 
 
+def placer_seeds(text: str) -> list[int]:
+    """--seeds S,S,... as nextpnr placer seeds; ValueError unless distinct non-negative integers."""
+    seeds = [int(x) for x in text.split(",")] if re.fullmatch(r"\d+(,\d+)*", text) else []
+    if not seeds or len(set(seeds)) != len(seeds):
+        raise ValueError(f"--seeds {text!r}: give distinct non-negative integers, comma-separated")
+    return seeds
+
+
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
                top: str = "prenc_core", seed: int = 1, parameters: dict[str, int] | None = None,
                sources: list[Path] | None = None) -> Result:
@@ -367,16 +375,11 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         extra = core_parameters(args.param)
+        seeds = placer_seeds(args.seeds)
     except ValueError as err:
         parser.error(str(err))
     if extra and not args.core:
         parser.error("--param goes with --core")
-    try:
-        seeds = [int(x) for x in args.seeds.split(",")]
-    except ValueError:
-        seeds = []
-    if not seeds or any(x < 0 for x in seeds) or len(set(seeds)) != len(seeds):
-        parser.error(f"--seeds {args.seeds!r}: give distinct non-negative integers, comma-separated")
     if seeds != [1] and not args.core:
         parser.error("--seeds goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
