@@ -129,6 +129,8 @@ def test_a_seed_sweep_reports_every_seed_then_fails_on_a_missed_clock(capsys):
     assert "(seed 1)" in printed.out and "(seed 2)" in printed.out
     assert "mean Fmax over seeds 1,2" in printed.out
     assert "seed(s) 1, 2" in printed.err
+
+
 @pytest.mark.parametrize("argv", [["--core", "ice40-hx8k", "--seeds", "1,x"],
                                   ["--core", "ice40-hx8k", "--seeds", "2,2"],
                                   ["--core", "ice40-hx8k", "--seeds", "-1"],
