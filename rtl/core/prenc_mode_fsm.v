@@ -379,12 +379,12 @@ module prenc_mode_fsm #(
       // dual_reg stays 0, so synthesis drops all that follows from it).
       wire       enter = (HYPOTHESES == 1) & illegal & valid_now & ~d_now & (sup == 2'b11);
       reg  [1:0] law_on_held;
-      reg  [1:0] realign_next;
+      reg  [1:0] realign_here;  // this case's realignment (realign_c)
       reg        drop;  // the offset is dropped (flush, INCREMENTAL)
       reg        won;   // a hypothesis won: the modes resume from support
       always @* begin
         law_on_held  = 2'b00;
-        realign_next = 2'b00;
+        realign_here = 2'b00;
         drop         = 1'b0;
         won          = 1'b0;
         if (illegal) begin
@@ -405,7 +405,7 @@ module prenc_mode_fsm #(
             end else if (other_new[DUAL_VOTES-1] && voted_new[2] && voted_new[3]) begin
               // The other way: the count is one slot off; the offset takes it.
               won          = 1'b1;
-              realign_next = dual_cw_reg ? 2'b01 : 2'b10;
+              realign_here = dual_cw_reg ? 2'b01 : 2'b10;
             end
           end
         end
@@ -428,9 +428,9 @@ module prenc_mode_fsm #(
       assign dual_n_c[gd]  = (HYPOTHESES == 1) & dual_keep & ~drop & (sup == 2'b11);
       assign flush_c[gd]   = drop | (dual_keep & (sup != 2'b11)) |
                              (resume & (support_now == 2'b00));
-      assign en_ca[gd]     = (lock_try & lock_agree) | (realign_next != 2'b00);
-      assign en_cp[gd]     = (lock_try & lock_alone) | (realign_next != 2'b00);
-      assign realign_c[gd] = realign_next;
+      assign en_ca[gd]     = (lock_try & lock_agree) | (realign_here != 2'b00);
+      assign en_cp[gd]     = (lock_try & lock_alone) | (realign_here != 2'b00);
+      assign realign_c[gd] = realign_here;
     end
   endgenerate
   // For either outcome of the offsets' comparison, kept as nets so that it is the
