@@ -10,7 +10,8 @@ clock, with the truth of the run:
     position `latency` clocks earlier
 
 except where a fault on A or B moved the pins themselves away from the truth: there
-the truth of the clocks within that many clocks is accepted too (`sync_tolerance`).
+the truth of the clocks within that many clocks is accepted too (`sync_tolerance`:
+the longest stretch of such clocks, those fewer than F apart counted as one).
 With a glitch filter of F clocks, the truth within F clocks is accepted as well: the
 filter removes true pulses shorter than F (a reversal right at an edge) as it
 removes glitches.
@@ -123,14 +124,23 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
     return {s.name: s for s in out}
 
 
-def sync_tolerance(enc: EncoderRun) -> int:
-    """Longest run of clocks where the faulted A or B differs from the clean one."""
+def sync_tolerance(enc: EncoderRun, filter_len: int = 0) -> int:
+    """Clocks a fault on A or B can hold the reader's view of them off the truth: the
+    longest stretch from the first to the last clock where the faulted A or B differs
+    from the clean one, where clocks fewer than `filter_len` apart count as one stretch.
+
+    A glitch filter of F clocks cannot settle between two such clocks (it needs F equal
+    samples in a row), so two 1-clock glitches next to a true edge with one clean
+    clock between them delay that edge by the whole stretch, not by one clock."""
     a, b = Disc.sync(enc.theta)
-    differs = (enc.a != a) | (enc.b != b)
-    if not differs.any():
+    differs = np.flatnonzero((enc.a != a) | (enc.b != b))
+    if not len(differs):
         return 0
-    edges = np.diff(np.concatenate([[0], differs.astype(np.int8), [0]]))
-    return int((np.flatnonzero(edges == -1) - np.flatnonzero(edges == 1)).max())
+    # A new stretch starts where the clean clocks since the last differing one
+    # number filter_len or more.
+    starts = np.concatenate([[0], np.flatnonzero(np.diff(differs) - 1 >= max(filter_len, 1)) + 1])
+    ends = np.concatenate([starts[1:] - 1, [len(differs) - 1]])
+    return int((differs[ends] - differs[starts] + 1).max())
 
 
 @dataclass
@@ -152,7 +162,7 @@ class Verdict:
 def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndarray,
           latency: int, tolerance: int | None = None, filter_len: int = 0) -> Verdict:
     """Compare per-clock outputs (index = clock) with the truth of the run."""
-    tol = (sync_tolerance(enc) if tolerance is None else tolerance) + filter_len
+    tol = (sync_tolerance(enc, filter_len) if tolerance is None else tolerance) + filter_len
     valid = np.asarray(valid).astype(bool)
     pos_hyb = np.asarray(pos_hyb, dtype=np.int64)
     truth = enc.hybrid

@@ -7,7 +7,8 @@ Two independent expectations, neither from the RTL:
 - the truth: whenever pos_valid is 1, pos_hyb (and pos_abs) equal the true
   position 6 + FILTER clocks earlier (prenc.virtual.scenarios.judge: within FILTER clocks
   of it, as the filter removes true pulses shorter than FILTER, and within the
-  clocks a fault on A or B held the pins off the truth);
+  clocks a fault on A or B held the pins off the truth, faults fewer than FILTER
+  clocks apart counted as one);
 - the clock-level model prenc.core.reader.Reader: on every clock the same pos_valid and
   mode and, when valid, the same pos_hyb.
 Availability and the time in each mode are logged per scenario, with the seed;
