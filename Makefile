@@ -11,6 +11,9 @@
 #   make formal  every formal proof of formal/*.sby (SymbiYosys, Yices; also in make test);
 #                the cover traces kept in build/formal/covers/ (index.md)
 #   make mutate  mutants of each proven block, and how many the proofs kill
+#   make soak [ARGS="--bits 10 --filter 0 --seeds 1..500"]
+#                many random draws of the end-to-end scenarios through the reader
+#                model, as CI judges the RTL (scripts/soak.py --help)
 #   make board-sim [ARGS="--profile reversals --misreads 0.01"]
 #                the virtual board: prenc_board on Verilator with its UART on a pty,
 #                for `prenc host` without a board (scripts/board_sim.py --help)
@@ -36,7 +39,7 @@ WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT
 BOARD ?= icebreaker
 BITS  ?= 10
 
-.PHONY: all demo test bench lint rom synth board-sim formal mutate equiv sysdeps venv clean distclean
+.PHONY: all demo test bench lint rom synth board-sim formal mutate equiv soak sysdeps venv clean distclean
 
 all: test
 
@@ -88,6 +91,9 @@ equiv: $(STAMP)
 
 mutate: $(STAMP)
 	@$(PY) scripts/mutate.py --jobs $(JOBS) $(ARGS)
+
+soak: $(STAMP)
+	@$(PY) scripts/soak.py --jobs $(JOBS) $(ARGS)
 
 board-sim: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/board_sim.py $(ARGS)

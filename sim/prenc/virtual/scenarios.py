@@ -124,6 +124,12 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
     return {s.name: s for s in out}
 
 
+def must_lock(name: str) -> bool:
+    """Whether every draw of the scenario must reach a valid position: start-up,
+    reversals and acceleration, without faults."""
+    return name.startswith(("start", "reversals", "accelerate"))
+
+
 def sync_tolerance(enc: EncoderRun, filter_len: int = 0) -> int:
     """Clocks a fault on A or B can hold the reader's view of them off the truth: the
     longest stretch from the first to the last clock where the faulted A or B differs

@@ -36,7 +36,7 @@ from prenc.codes.debruijn import Code
 from prenc.virtual.goals import SHORT_OF_GOAL, first_valid_travel, goals
 from prenc.core.predictor import taps_mask
 from prenc.core.reader import Reader
-from prenc.virtual.scenarios import core_latency, judge, scenarios
+from prenc.virtual.scenarios import core_latency, judge, must_lock, scenarios
 from runner import rom_file, run
 
 TOPLEVEL = "prenc_core"
@@ -114,7 +114,7 @@ async def scenario(dut, name):
         k = int(np.argmax(differ))
         raise AssertionError(f"{name}, seed {seed}: clock {k}: RTL valid/mode/hyb {valid[k]}/{mode[k]}/{hyb[k]}, "
                              f"model {m_valid[k]}/{m_mode[k]}/{m_hyb[k]}")
-    if name.startswith(("start", "reversals", "accelerate")):
+    if must_lock(name):
         assert verdict.first_valid is not None, f"{name}, seed {seed}: never valid"
 
 
