@@ -35,7 +35,7 @@ def test_malformed_requests_exit_2_naming_the_option(argv, message, capsys):
 def test_a_failed_draw_prints_its_replay_and_exits_1(monkeypatch, capsys):
     def failing(n, filter_len, seeds, names, hypotheses, jobs):
         return SoakResult(n, filter_len, hypotheses, runs=1,
-                          failures=[SoakFailure(seeds[0], "glitches", "wrong valid position at clock 344 (1 clocks)")])
+                          failures=[SoakFailure(seeds[0], "glitches", "wrong valid position at clock 344")])
 
     monkeypatch.setattr(soak_script, "soak", failing)
     assert soak_script.main(["--seeds", "809969825", "--scenario", "glitches"]) == 1

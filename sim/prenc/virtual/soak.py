@@ -34,7 +34,7 @@ RESET_CLOCKS = 4  # as tb/core/prenc_core drives rst
 class SoakFailure:
     seed: int
     scenario: str
-    what: str  # "wrong valid position at clock K (M clocks)" or "never valid"
+    what: str  # "wrong valid position at clock K[, M clocks in all]" or "never valid"
 
     def line(self, n: int, filter_len: int) -> str:
         return (f"N={n} FILTER={filter_len} {self.scenario} seed {self.seed}: {self.what} "
@@ -67,16 +67,17 @@ def soak_seed(n: int, filter_len: int, seed: int, names: Sequence[str], hypothes
     if seed < 1:
         raise ValueError(f"seed {seed} must be 1 or more (0 makes the RTL test draw its own)")
     failures = []
+    code = Code(n)
     for name, sc in scenarios(n, filter_len, seed).items():
         if name not in names:
             continue
         enc = sc.run(n)
-        outs = reader_type(Code(n), filter_len, hypotheses=hypotheses).run(enc, RESET_CLOCKS)
+        outs = reader_type(code, filter_len, hypotheses=hypotheses).run(enc, RESET_CLOCKS)
         verdict = judge(enc, np.array([o.valid for o in outs]), np.array([o.pos_hyb for o in outs]),
                         np.array([o.mode for o in outs]), core_latency(filter_len), filter_len=filter_len)
         if verdict.wrong:
-            failures.append(SoakFailure(seed, name, f"wrong valid position at clock {verdict.first_wrong} "
-                                                    f"({verdict.wrong} clocks)"))
+            more = f", {verdict.wrong} clocks in all" if verdict.wrong > 1 else ""
+            failures.append(SoakFailure(seed, name, f"wrong valid position at clock {verdict.first_wrong}{more}"))
         if must_lock(name) and verdict.first_valid is None:
             failures.append(SoakFailure(seed, name, "never valid"))
     return failures
