@@ -185,3 +185,9 @@ def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndar
     modes = {m.name: float(np.mean(np.asarray(mode) == int(m))) for m in Mode}
     return Verdict(clocks, wrong, int(np.argmax(bad)) if wrong else None,
                    float(after.mean()) if len(after) else 0.0, first_valid, modes)
+
+
+def judge_outputs(enc: EncoderRun, outs: Sequence, latency: int, filter_len: int = 0) -> Verdict:
+    """`judge` for a model's outputs, one per clock, each with .valid, .pos_hyb and .mode."""
+    return judge(enc, np.array([o.valid for o in outs]), np.array([o.pos_hyb for o in outs]),
+                 np.array([o.mode for o in outs]), latency, filter_len=filter_len)

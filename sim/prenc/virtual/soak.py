@@ -21,11 +21,9 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Iterable, Sequence
 
-import numpy as np
-
 from ..codes.debruijn import Code
 from ..core.reader import Reader
-from .scenarios import core_latency, judge, must_lock, scenarios
+from .scenarios import core_latency, judge_outputs, must_lock, scenarios
 
 RESET_CLOCKS = 4  # as tb/core/prenc_core drives rst
 
@@ -73,8 +71,7 @@ def soak_seed(n: int, filter_len: int, seed: int, names: Sequence[str], hypothes
             continue
         enc = sc.run(n)
         outs = reader_type(code, filter_len, hypotheses=hypotheses).run(enc, RESET_CLOCKS)
-        verdict = judge(enc, np.array([o.valid for o in outs]), np.array([o.pos_hyb for o in outs]),
-                        np.array([o.mode for o in outs]), core_latency(filter_len), filter_len=filter_len)
+        verdict = judge_outputs(enc, outs, core_latency(filter_len), filter_len)
         if verdict.wrong:
             more = f", {verdict.wrong} clocks in all" if verdict.wrong > 1 else ""
             failures.append(SoakFailure(seed, name, f"wrong valid position at clock {verdict.first_wrong}{more}"))

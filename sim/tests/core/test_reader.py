@@ -13,18 +13,14 @@ from prenc.virtual.goals import SHORT_OF_GOAL, goals, measure
 from prenc.virtual.plain_reader import PlainReader
 from prenc.core.reader import LATENCY, Reader
 from prenc.core.track_word import TrackEvent, TrackWord
-from prenc.virtual.scenarios import judge, scenarios
+from prenc.virtual.scenarios import judge, judge_outputs, scenarios
 
 
 @pytest.mark.parametrize("n,filter_len", [(6, 0), (8, 2), (10, 0)])
 def test_scenarios_never_wrong(n, filter_len):
     for name, sc in scenarios(n, filter_len, 5).items():
         enc = sc.run(n)
-        outs = Reader(Code(n), filter_len).run(enc)
-        v = np.array([o.valid for o in outs])
-        h = np.array([o.pos_hyb for o in outs])
-        m = np.array([o.mode for o in outs])
-        verdict = judge(enc, v, h, m, LATENCY + filter_len, filter_len=filter_len)
+        verdict = judge_outputs(enc, Reader(Code(n), filter_len).run(enc), LATENCY + filter_len, filter_len)
         assert verdict.wrong == 0, f"{name}: wrong valid at clock {verdict.first_wrong}"
         assert verdict.first_valid is not None, f"{name}: never valid"
 

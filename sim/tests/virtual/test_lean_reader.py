@@ -5,7 +5,6 @@ way (the two rules differ only in how a raw word survives a reversal)."""
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 from prenc.codes.debruijn import Code
@@ -13,18 +12,14 @@ from prenc.core.reader import LATENCY, Reader
 from prenc.virtual.campaign import campaign
 from prenc.virtual.goals import goals, measure
 from prenc.virtual.lean_reader import LeanReader
-from prenc.virtual.scenarios import judge, scenarios
+from prenc.virtual.scenarios import judge_outputs, scenarios
 
 
 @pytest.mark.parametrize("n", [6, 10])
 def test_scenarios_never_wrong(n):
     for name, sc in scenarios(n, 0, 11).items():
         enc = sc.run(n)
-        outs = LeanReader(Code(n)).run(enc)
-        v = np.array([o.valid for o in outs])
-        h = np.array([o.pos_hyb for o in outs])
-        m = np.array([o.mode for o in outs])
-        verdict = judge(enc, v, h, m, LATENCY)
+        verdict = judge_outputs(enc, LeanReader(Code(n)).run(enc), LATENCY)
         assert verdict.wrong == 0, f"{name}: wrong valid at clock {verdict.first_wrong}"
 
 

@@ -14,7 +14,7 @@ from prenc.codes.debruijn import Code
 from prenc.core.reader import Reader
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.faults import Glitch
-from prenc.virtual.scenarios import core_latency, judge, scenarios, sync_tolerance
+from prenc.virtual.scenarios import core_latency, judge, judge_outputs, scenarios, sync_tolerance
 from prenc.virtual.trajectory import Trajectory
 
 N = 6
@@ -73,7 +73,6 @@ def test_glitch_chatter_draw_of_ci_is_right():
     assert sync_tolerance(enc) == 1
     assert sync_tolerance(enc, filter_len) == 3
     outs = Reader(Code(n), filter_len).run(enc, 4)
-    verdict = judge(enc, np.array([o.valid for o in outs]), np.array([o.pos_hyb for o in outs]),
-                    np.array([o.mode for o in outs]), core_latency(filter_len), filter_len=filter_len)
+    verdict = judge_outputs(enc, outs, core_latency(filter_len), filter_len)
     assert verdict.wrong == 0, f"wrong valid at clock {verdict.first_wrong}"
     assert verdict.availability > 0.95
