@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Iterable, Sequence
 
 from ..codes.debruijn import Code
@@ -86,18 +87,11 @@ def soak(n: int, filter_len: int, seeds: Iterable[int], names: Sequence[str] | N
     processes. Failures come in seed order."""
     names = check_names(n, filter_len, names)
     seeds = list(seeds)
-    result = SoakResult(n, filter_len, hypotheses)
-    args = [(n, filter_len, s, names, hypotheses, reader_type) for s in seeds]
+    one_seed = partial(soak_seed, n, filter_len, names=names, hypotheses=hypotheses, reader_type=reader_type)
     if jobs > 1 and len(seeds) > 1:
         with ProcessPoolExecutor(max_workers=jobs) as pool:
-            per_seed = list(pool.map(_soak_seed_args, args))
+            per_seed = list(pool.map(one_seed, seeds))
     else:
-        per_seed = [soak_seed(*a) for a in args]
-    for failures in per_seed:
-        result.failures += failures
-    result.runs = len(seeds) * len(names)
-    return result
-
-
-def _soak_seed_args(args: tuple) -> list[SoakFailure]:
-    return soak_seed(*args)
+        per_seed = [one_seed(s) for s in seeds]
+    return SoakResult(n, filter_len, hypotheses, runs=len(seeds) * len(names),
+                      failures=[f for failures in per_seed for f in failures])

@@ -30,7 +30,7 @@ class NeverValid(Reader):
 
 
 def test_the_model_passes_its_draws():
-    result = soak(N, 2, [1, 2], NAMES)
+    result = soak(N, 2, [1, 2], NAMES, jobs=2)  # the process pool too
     assert (result.runs, result.failures) == (6, [])
 
 
