@@ -24,6 +24,7 @@ from typing import Iterable, NamedTuple, Sequence
 import numpy as np
 
 from ..codes.debruijn import Code
+from .printing import Printing
 from .trajectory import Trajectory
 
 SIGNALS = ("head1", "head2", "a", "b")
@@ -36,11 +37,17 @@ def default_shift(n: int) -> int:
 
 @dataclass(frozen=True)
 class Disc:
-    """An encoder disc: the code on two tracks and the quadrature sync track."""
+    """An encoder disc: the code on two tracks and the quadrature sync track.
+
+    `printing` gives a printed disc's imperfections (prenc.virtual.printing); without
+    it the disc is the datasheet's ideal one. `heads`, `sync` and `hybrid` are always
+    the ideal geometry; `read` is what the heads and the sync track of this disc see.
+    """
 
     n: int = 10
     taps: tuple[int, ...] | None = None
     shift: int | None = None
+    printing: Printing | None = None
     code: Code = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -85,6 +92,18 @@ class Disc:
         head1 = seq[p]
         head2 = seq[(p + self.length // 2 + self.shift) % self.length]
         return head1, head2
+
+    def read(self, theta) -> dict[str, np.ndarray]:
+        """The four signals of this disc at the shaft angle theta, in SIGNALS order."""
+        if self.printing is None:
+            head1, head2 = self.heads(theta)
+            a, b = self.sync(theta)
+        else:
+            head1, _ = self.heads(self.printing.seen(theta, self.length, head=1))
+            _, head2 = self.heads(self.printing.seen(theta, self.length, head=2))
+            a, b = self.printing.sync(theta, self.length)
+        return {"head1": np.array(head1, dtype=np.uint8), "head2": np.array(head2, dtype=np.uint8),
+                "a": a, "b": b}
 
     @classmethod
     def sync(cls, theta) -> tuple[np.ndarray, np.ndarray]:
@@ -170,14 +189,7 @@ class VirtualEncoder:
         self.faults = list(faults)
 
     def clean(self, theta: np.ndarray) -> dict[str, np.ndarray]:
-        head1, head2 = self.disc.heads(theta)
-        a, b = self.disc.sync(theta)
-        return {
-            "head1": np.array(head1, dtype=np.uint8),
-            "head2": np.array(head2, dtype=np.uint8),
-            "a": a,
-            "b": b,
-        }
+        return self.disc.read(theta)
 
     def run(self, trajectory: Trajectory | Iterable[float], clk_hz: float | None = None) -> EncoderRun:
         """Sample the encoder along a trajectory, one sample per clock tick."""

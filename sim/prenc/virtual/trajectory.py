@@ -76,10 +76,21 @@ class Trajectory:
         """Stand still."""
         return self._append(np.full(self._ticks(seconds), self.end), 0.0)
 
-    def constant(self, speed: float, seconds: float) -> "Trajectory":
-        """Turn at `speed` slots/s (negative: counter-clockwise)."""
-        k = np.arange(1, self._ticks(seconds) + 1)
-        return self._append(self.end + speed * k / self.clk_hz, speed)
+    def constant(self, speed: float, seconds: float, ripple: float = 0.0,
+                 ripple_hz: float = 0.0) -> "Trajectory":
+        """Turn at `speed` slots/s (negative: counter-clockwise). With `ripple`, the
+        speed is speed * (1 + ripple * sin(2 pi ripple_hz t)) (t from the segment's
+        start): ripple = 0.02 is a +-2 % speed ripple."""
+        if ripple and not ripple_hz > 0:
+            raise ValueError(f"a speed ripple needs ripple_hz > 0, got {ripple_hz!r}")
+        t = np.arange(1, self._ticks(seconds) + 1) / self.clk_hz
+        theta = self.end + speed * t
+        end_speed = speed
+        if ripple:
+            w = 2 * math.pi * ripple_hz
+            theta += speed * ripple * (1 - np.cos(w * t)) / w
+            end_speed = speed * (1 + ripple * math.sin(w * t[-1])) if len(t) else speed
+        return self._append(theta, end_speed)
 
     def accelerate(self, to_speed: float, seconds: float) -> "Trajectory":
         """Change speed linearly from the current speed to `to_speed`."""

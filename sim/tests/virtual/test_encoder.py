@@ -12,6 +12,7 @@ import pytest
 
 from prenc.codes.debruijn import Code
 from prenc.virtual.encoder import Disc, Event, VirtualEncoder
+from prenc.virtual.printing import Printing
 from prenc.virtual.faults import (
     Bounce,
     ContaminatedSlot,
@@ -292,3 +293,69 @@ def test_random_misreads_hit_whole_passes_with_the_given_probability(back_and_fo
         assert stop == len(wrong) or clean.slot[stop] != clean.slot[stop - 1]
     assert 0.3 < wrong.mean() < 0.7
     assert np.array_equal(always.head1, clean.head1)  # the other head is untouched
+
+
+# -- a printed disc (issue 37, item 5) -------------------------------------------
+
+
+def test_an_ideal_printing_reads_as_the_datasheet_disc():
+    theta = np.linspace(3.0, 40.0, 5001)
+    ideal = Disc(6).read(theta)
+    printed = Disc(6, printing=Printing()).read(theta)
+    for name in ("head1", "head2", "a", "b"):
+        assert np.array_equal(ideal[name], printed[name]), name
+
+
+def crossings(theta: np.ndarray, signal: np.ndarray, level: int) -> np.ndarray:
+    """The angles (midpoints) at which `signal` changes to `level` on a CW sweep."""
+    c = edges(signal)
+    c = c[signal[c] == level]
+    return (theta[c] + theta[c - 1]) / 2
+
+
+def test_printed_edges_sit_where_phase_duty_and_edge_errors_put_them():
+    # Written from the definitions: A high over [p + 0.5 - (dA - 0.5)/2, p + 1 + (dA - 0.5)/2),
+    # B's interval centred on p + 1 and shifted by phase / 360, each edge off by its own error.
+    printing = Printing(edge_error=0.04, phase_deg=10, duty_a=0.45, duty_b=0.55, seed=5)
+    disc = Disc(4, printing=printing)
+    theta = np.arange(0, 16 * 20000) / 20000 + 0.0000125   # one turn, 1/20000 slot steps
+    sig = disc.read(theta)
+    rng = np.random.default_rng(5)
+    err = {k: rng.uniform(-0.04, 0.04, 16) for k in ("a_rise", "a_fall", "b_rise", "b_fall")}
+    p = np.arange(16)
+    want_a_rise = p + 0.5 + 0.025 + err["a_rise"]
+    want_a_fall = p + 1.0 - 0.025 + err["a_fall"]
+    want_b_rise = p + 0.75 - 0.025 + 10 / 360 + err["b_rise"]
+    want_b_fall = p + 1.25 + 0.025 + 10 / 360 + err["b_fall"]
+    got = {"a_rise": crossings(theta, sig["a"], 1), "a_fall": crossings(theta, sig["a"], 0),
+           "b_rise": crossings(theta, sig["b"], 1), "b_fall": crossings(theta, sig["b"], 0)}
+    for name, want in (("a_rise", want_a_rise), ("a_fall", want_a_fall),
+                       ("b_rise", want_b_rise), ("b_fall", want_b_fall)):
+        inside = lambda x: np.sort(x[(x > 1) & (x < 15)])  # away from the sweep's ends
+        g, w = inside(got[name]), inside(want)
+        assert len(g) == len(w) >= 13, name
+        assert np.max(np.abs(g - w)) <= 1 / 20000, name
+
+
+def test_eccentricity_moves_the_heads_in_opposite_ways_once_per_turn():
+    printing = Printing(eccentricity=0.2, eccentricity_phase=0.3)
+    L = 64
+    theta = np.array([5.0, 20.0, 37.0])
+    want = 0.2 * np.sin(2 * np.pi * theta / L + 0.3)
+    assert np.allclose(printing.seen(theta, L, head=1) - theta, want)
+    assert np.allclose(printing.seen(theta, L, head=2) - theta, -want)
+
+
+def test_printing_parameters_out_of_range_are_refused():
+    for kwargs in ({"duty_a": 0.2}, {"edge_error": 0.2}, {"phase_deg": 45}, {"eccentricity": 0.5}):
+        with pytest.raises(ValueError, match=next(iter(kwargs))):
+            Printing(**kwargs)
+
+
+def test_speed_ripple_moves_the_speed_around_its_mean():
+    clk = 1e6
+    traj = Trajectory(clk_hz=clk, start=0.0).constant(1000.0, 0.02, ripple=0.02, ripple_hz=100.0)
+    speed = np.diff(traj.theta) * clk
+    assert abs(speed.max() / 1000.0 - 1.02) < 1e-3 and abs(speed.min() / 1000.0 - 0.98) < 1e-3
+    # Whole ripple periods (two of 10 ms) travel exactly the mean speed's distance.
+    assert abs(traj.theta[-1] - 20.0) < 1e-6
