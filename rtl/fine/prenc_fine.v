@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: Apache-2.0
+// prenc_fine: fine position and velocity beside the core (docs/fine.md).
+//
+//   prenc_core: sync_step, direction, sync_illegal -> prenc_velocity -> velocity, accel
+//               pos_hyb, pos_valid ------------------> prenc_fine_position -> fine_pos
+//
+// The core stays the judge of the position: fine_pos's quarter is pos_hyb's while
+// pos_valid, but for the extrapolation over the pipeline (LOOKAHEAD_HALVES), which can
+// carry it past the quarter's edge by |velocity| * LOOKAHEAD_HALVES / 2 quarters.
+//
+// Parameters
+//   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
+//   WINDOW, TIMER_BITS               prenc_velocity's (2048, 26)
+//
+// Ports: as prenc_velocity's and prenc_fine_position's.
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_fine #(
+  parameter integer N                = 10,
+  parameter integer FINE_BITS        = 8,
+  parameter integer LOOKAHEAD_HALVES = 0,
+  parameter integer WINDOW           = 2048,
+  parameter integer TIMER_BITS       = 26
+) (
+  input  wire                   clk,
+  input  wire                   rst,
+  input  wire [N+1:0]           pos_hyb,
+  input  wire                   pos_valid,
+  input  wire                   step,
+  input  wire                   step_cw,
+  input  wire                   illegal,
+  output wire [N+FINE_BITS+1:0] fine_pos,
+  output wire                   fine_valid,
+  output wire                   interpolated,
+  output wire [50:0]            velocity,
+  output wire [49:0]            accel,
+  output wire                   velocity_valid
+);
+
+  prenc_velocity #(
+    .WINDOW     (WINDOW),
+    .TIMER_BITS (TIMER_BITS)
+  ) u_velocity (
+    .clk      (clk),
+    .rst      (rst),
+    .step     (step),
+    .step_cw  (step_cw),
+    .illegal  (illegal),
+    .velocity (velocity),
+    .accel    (accel),
+    .valid    (velocity_valid)
+  );
+
+  prenc_fine_position #(
+    .N                (N),
+    .FINE_BITS        (FINE_BITS),
+    .LOOKAHEAD_HALVES (LOOKAHEAD_HALVES)
+  ) u_fine_position (
+    .clk            (clk),
+    .rst            (rst),
+    .pos_hyb        (pos_hyb),
+    .pos_valid      (pos_valid),
+    .step           (step),
+    .step_cw        (step_cw),
+    .velocity       (velocity),
+    .velocity_valid (velocity_valid),
+    .fine_pos       (fine_pos),
+    .fine_valid     (fine_valid),
+    .interpolated   (interpolated)
+  );
+
+endmodule
+
+`resetall

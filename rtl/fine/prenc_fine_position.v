@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+// prenc_fine_position: the verified position with the fraction of the quarter passed,
+// extrapolated to the instant a consumer asks.
+//
+// - travel: the velocity integrated since pos_hyb's last step (FRAC = 48 fractional
+//   bits of a quarter, saturating at 2 quarters). The decoder's step is delayed
+//   STEP_DELAY = 3 cycles, so that travel restarts on the cycle pos_hyb shows the step.
+// - The fraction: the last step crossed the quarter's lower edge (CW) or its upper
+//   edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-F). While pos_valid the fine
+//   position's quarter is pos_hyb's: when the next edge is late, the fraction holds at
+//   the quarter's end.
+// - The extrapolation: + velocity * LOOKAHEAD_HALVES / 2, the clocks from the pins to
+//   this block's output (and half a clock for an edge's unknown place in its clock). It
+//   is the only way the fine position leaves the verified quarter, by at most
+//   |velocity| * LOOKAHEAD_HALVES / 2 quarters. LOOKAHEAD_HALVES = 0 turns it off.
+// - Without a valid velocity: the fraction is the quarter's middle, nothing is
+//   extrapolated, and `interpolated` is 0.
+// fine_pos = pos_hyb * 2^F + the fraction rounded to F bits, modulo 2^(N + 2 + F);
+// registered, one cycle after pos_hyb. Model: prenc.fine.fine_position.FinePosition.
+//
+// Parameters
+//   N                 code word length, 2..24 (pos_hyb is N + 2 bits)
+//   FINE_BITS         F, the fraction's bits, 0..8
+//   LOOKAHEAD_HALVES  half clocks of extrapolation, 0..255 (0: off)
+//
+// Ports
+//   pos_hyb, pos_valid   prenc_core's
+//   step, step_cw        the quadrature decoder's registered step (prenc_core's
+//                        sync_step and direction)
+//   velocity, velocity_valid   prenc_velocity's
+//   fine_pos             N + 2 + F bits: quarters and their fraction
+//   fine_valid           pos_valid, aligned with fine_pos
+//   interpolated         fine_valid, with a valid velocity (else the fraction is fixed)
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_fine_position #(
+  parameter integer N                = 10,
+  parameter integer FINE_BITS        = 8,
+  parameter integer LOOKAHEAD_HALVES = 0
+) (
+  input  wire                   clk,
+  input  wire                   rst,
+  input  wire [N+1:0]           pos_hyb,
+  input  wire                   pos_valid,
+  input  wire                   step,
+  input  wire                   step_cw,
+  input  wire [50:0]            velocity,
+  input  wire                   velocity_valid,
+  output wire [N+FINE_BITS+1:0] fine_pos,
+  output wire                   fine_valid,
+  output wire                   interpolated
+);
+
+  generate
+    if (N < 2 || N > 24) begin : g_bad_n
+      initial $display("ERROR: %m: parameter N = %0d is out of range 2..24", N);
+      prenc_fine_position_parameter_N_out_of_range_2_to_24 u_stop ();
+    end
+    if (FINE_BITS < 0 || FINE_BITS > 8) begin : g_bad_fine_bits
+      initial $display("ERROR: %m: parameter FINE_BITS = %0d is out of range 0..8", FINE_BITS);
+      prenc_fine_position_parameter_FINE_BITS_out_of_range_0_to_8 u_stop ();
+    end
+    if (LOOKAHEAD_HALVES < 0 || LOOKAHEAD_HALVES > 255) begin : g_bad_lookahead
+      initial $display("ERROR: %m: parameter LOOKAHEAD_HALVES = %0d is out of range 0..255",
+                       LOOKAHEAD_HALVES);
+      prenc_fine_position_parameter_LOOKAHEAD_HALVES_out_of_range_0_to_255 u_stop ();
+    end
+  endgenerate
+
+  localparam integer FRAC = 48;
+  localparam integer F    = FINE_BITS;
+  localparam integer W    = N + 2 + F;
+  localparam integer LB   = FRAC + 4;   // travel
+  localparam integer XB   = FRAC + 12;  // the fraction with the extrapolation
+  localparam integer STEP_DELAY = 3;
+
+  localparam signed [LB-1:0] LEAD_LIMIT = {{(LB - FRAC - 2){1'b0}}, 2'b10, {FRAC{1'b0}}};
+  localparam signed [LB:0]   ONE        = {{(LB - FRAC){1'b0}}, 1'b1, {FRAC{1'b0}}};
+  localparam signed [LB:0]   TOP        = ONE - (ONE >>> F);    // 1 - 2^-F
+  localparam signed [XB-1:0] LOOKAHEAD  = {{(XB - 9){1'b0}}, LOOKAHEAD_HALVES[8:0]};
+  localparam signed [XB-1:0] ONE_X      = {{(XB - FRAC - 1){1'b0}}, 1'b1, {FRAC{1'b0}}};
+  localparam signed [XB-1:0] HALF_LSB   = ONE_X >>> (F + 1);   // rounds to F bits
+  localparam [W-1:0]         MIDDLE     = (F == 0) ? {W{1'b0}}
+                                                   : ({{(W - 1){1'b0}}, 1'b1} << (F - 1));
+
+  reg [STEP_DELAY-1:0] step_d_reg;
+  reg [STEP_DELAY-1:0] cw_d_reg;
+  reg signed [LB-1:0]  travel_reg;
+  reg                  cw_reg;
+  reg [W-1:0]          fine_pos_reg;
+  reg                  valid_reg;
+  reg                  interpolated_reg;
+
+  // The fraction of the quarter, clamped to it, then extrapolated and rounded.
+  wire signed [LB:0]   edge_travel = (cw_reg ? {(LB + 1){1'b0}} : ONE) +
+                                     {travel_reg[LB-1], travel_reg};
+  wire signed [LB:0]   clamped     = edge_travel[LB] ? {(LB + 1){1'b0}} :
+                                     (edge_travel > TOP) ? TOP : edge_travel;
+  wire signed [XB-1:0] v_wide      = {{(XB - 51){velocity[50]}}, velocity};
+  wire signed [XB-1:0] ext_twice   = v_wide * LOOKAHEAD;
+  wire signed [XB-1:0] sum         = {{(XB - LB - 1){1'b0}}, clamped} + (ext_twice >>> 1) +
+                                     HALF_LSB;
+  wire signed [XB-1:0] rounded     = sum >>> (FRAC - F);
+  wire [W-1:0]         fraction    = velocity_valid ? rounded[W-1:0] : MIDDLE;
+  wire [W-1:0]         base        = {pos_hyb, {F{1'b0}}};
+  wire signed [LB-1:0] travel_sum  = travel_reg + {{(LB - 51){velocity[50]}}, velocity};
+  wire [LB-1:0]        travel_abs  = travel_sum[LB-1] ? -travel_sum : travel_sum;
+  wire                 unused_ok   = &{1'b0, rounded[XB-1:W]};  // the quarters above pos_hyb's wrap
+
+  always @(posedge clk) begin
+    fine_pos_reg     <= base + fraction;
+    valid_reg        <= pos_valid;
+    interpolated_reg <= pos_valid & velocity_valid;
+    if (step_d_reg[STEP_DELAY-1]) begin
+      travel_reg <= {LB{1'b0}};
+      cw_reg     <= cw_d_reg[STEP_DELAY-1];
+    end else if (travel_abs < LEAD_LIMIT) begin
+      travel_reg <= travel_sum;
+    end
+    step_d_reg <= {step_d_reg[STEP_DELAY-2:0], step};
+    cw_d_reg   <= {cw_d_reg[STEP_DELAY-2:0], step_cw};
+    if (rst) begin
+      step_d_reg       <= {STEP_DELAY{1'b0}};
+      cw_d_reg         <= {STEP_DELAY{1'b1}};
+      travel_reg       <= {LB{1'b0}};
+      cw_reg           <= 1'b1;
+      fine_pos_reg     <= {W{1'b0}};
+      valid_reg        <= 1'b0;
+      interpolated_reg <= 1'b0;
+    end
+  end
+
+  assign fine_pos     = fine_pos_reg;
+  assign fine_valid   = valid_reg;
+  assign interpolated = interpolated_reg;
+
+endmodule
+
+`resetall

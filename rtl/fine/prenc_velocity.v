@@ -1,0 +1,525 @@
+// SPDX-License-Identifier: Apache-2.0
+// prenc_velocity: velocity and acceleration from the sync track's edge timing.
+//
+// Units: quarters (quadrature states) and clocks; `velocity` and `accel` are signed
+// with FRAC = 48 fractional bits (quarters per clock, quarters per clock squared).
+// docs/fine.md gives the conversion to rpm and the method in full; in short:
+//
+// - Windows between steps over edges of one type (a full sync cycle apart: the A/B
+//   phase and duty errors cancel), each at least WINDOW clocks long.
+// - When a window closes after another one (n1 quarters in P1 clocks, n2 in P2): if
+//   |n1 P2 - n2 P1| < n1 + n2 (the same speed within a clock's quantization), or
+//   the last update did not also see an acceleration of the same sign, the velocity
+//   is the mean over both windows and accel 0. Otherwise a parabola through the
+//   three anchors: a = 2 (n1/P1 - n2/P2) / (P1 + P2), velocity = n1/P1 + a (P1/2 +
+//   FULL_CLOCKS) on the cycle it is loaded. Between updates velocity += accel.
+// - Before a window closes: the mean velocity since the window's first step.
+// - A reversal restarts the windows; the velocity takes the new sign at once, with
+//   the speed the last edge was crossed at. Integrating accel never crosses 0: it
+//   stops there. The velocity is 0 or has the sign of the last step.
+// - Overdue (the velocity predicts 1.5 quarters since the last step and none came):
+//   accel = -3 v / E, which reaches 0 at two predicted quarter periods. No step for
+//   2^TIMER_BITS - 1 clocks: 0 as well.
+// - An illegal transition drops the velocity (`valid` 0) until the next estimate.
+//
+// One serial divider (prenc_divider) and a serial multiplier do the arithmetic: an
+// update takes FULL_CLOCKS; a step that comes while they are busy updates nothing.
+// Model: prenc.fine.velocity.Velocity, which this equals clock for clock.
+//
+// Parameters
+//   WINDOW       shortest window in clocks, 16..2^(TIMER_BITS-1)-1 (2048: 68 us at 30 MHz)
+//   TIMER_BITS   width of the clocks counted, 12..32 (26: 2.2 s at 30 MHz)
+//
+// Ports
+//   step, step_cw, illegal   the quadrature decoder's registered outputs (prenc_core's
+//                            sync_step, direction, sync_illegal)
+//   velocity     quarters per clock, signed, FRAC fractional bits
+//   accel        quarters per clock per clock, signed, FRAC fractional bits
+//   valid        the velocity is an estimate (0 after reset and an illegal transition)
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_velocity #(
+  parameter integer WINDOW     = 2048,
+  parameter integer TIMER_BITS = 26
+) (
+  input  wire        clk,
+  input  wire        rst,
+  input  wire        step,
+  input  wire        step_cw,
+  input  wire        illegal,
+  output wire [50:0] velocity,
+  output wire [49:0] accel,
+  output wire        valid
+);
+
+  generate
+    if (TIMER_BITS < 12 || TIMER_BITS > 32) begin : g_bad_timer_bits
+      initial $display("ERROR: %m: parameter TIMER_BITS = %0d is out of range 12..32", TIMER_BITS);
+      prenc_velocity_parameter_TIMER_BITS_out_of_range_12_to_32 u_stop ();
+    end
+    if (WINDOW < 16 || WINDOW >= (1 << (TIMER_BITS - 1))) begin : g_bad_window
+      initial $display("ERROR: %m: parameter WINDOW = %0d is out of range 16..2^(TIMER_BITS-1)-1",
+                       WINDOW);
+      prenc_velocity_parameter_WINDOW_out_of_range u_stop ();
+    end
+  endgenerate
+
+  localparam integer FRAC  = 48;
+  localparam integer QB    = FRAC + 1;            // quotient bits
+  localparam integer VB    = FRAC + 3;            // velocity
+  localparam integer AB    = FRAC + 2;            // accel
+  localparam integer CB    = 16;                  // edge count
+  localparam integer TB    = TIMER_BITS;
+  localparam integer MB    = ((CB > TB + 1) ? CB : TB + 1) + 1;   // multiplier (a spare bit)
+  localparam integer PB    = TB + 1 + AB;         // product
+  localparam integer LB    = FRAC + 4;            // lead (and its sum)
+  localparam integer NB    = 66;                  // numerator (65 used)
+  localparam integer DB    = TB + 1;              // denominator
+  localparam integer DIV_CLOCKS  = QB + 1;
+  localparam integer FULL_CLOCKS = 2 * CB + 3 * DIV_CLOCKS + TB + 5;
+
+  localparam [3:0] S_IDLE = 4'd0, S_MEAN = 4'd1, S_CROSS1 = 4'd2, S_CROSS2 = 4'd3,
+                   S_CONSTANT = 4'd4, S_FIT_V01 = 4'd5, S_FIT_V12 = 4'd6, S_FIT_A = 4'd7,
+                   S_FIT_MUL = 4'd8, S_DECAY = 4'd9;
+
+  localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
+  localparam signed [LB-1:0] LEAD_LIMIT = {{(LB - FRAC - 2){1'b0}}, 2'b10, {FRAC{1'b0}}};
+  localparam signed [LB-1:0] OVERDUE    = {{(LB - FRAC - 1){1'b0}}, 2'b11, {(FRAC - 1){1'b0}}};
+  localparam [TB-1:0] TIMER_MAX = {TB{1'b1}};
+
+  // Registers (the model's attributes of the same names) and their next values.
+  reg signed [VB-1:0] velocity_reg;
+  reg signed [AB-1:0] accel_reg;
+  reg valid_reg;
+  reg [CB-1:0] count_reg;
+  reg cw_reg;
+  reg moved_reg;
+  reg [VB-2:0] step_speed_reg;
+  reg [TB-1:0] since_step_reg;
+  reg signed [LB-1:0] lead_reg;
+  reg have_a_reg;
+  reg [CB-1:0] x_a_reg;
+  reg [TB-1:0] since_a_reg;
+  reg have_prev_reg;
+  reg [CB-1:0] prev_n_reg;
+  reg [TB-1:0] prev_clocks_reg;
+  reg [CB-1:0] n1_reg;
+  reg [TB-1:0] p1_reg;
+  reg [CB-1:0] n2_reg;
+  reg [TB-1:0] p2_reg;
+  reg [3:0] state_reg;
+  reg negative_reg;
+  reg [QB-1:0] v01_reg;
+  reg [PB-1:0] cross_reg;
+  reg [5:0] mul_left_reg;
+  reg [MB-1:0] multiplier_reg;
+  reg signed [AB-1:0] multiplicand_reg;
+  reg signed [PB-1:0] product_reg;
+  reg decaying_reg;
+  reg last_negative_reg;
+  reg last_fit_reg;
+  reg signed [VB-1:0] velocity_n;
+  reg signed [AB-1:0] accel_n;
+  reg valid_n;
+  reg [CB-1:0] count_n;
+  reg cw_n;
+  reg moved_n;
+  reg [VB-2:0] step_speed_n;
+  reg [TB-1:0] since_step_n;
+  reg signed [LB-1:0] lead_n;
+  reg have_a_n;
+  reg [CB-1:0] x_a_n;
+  reg [TB-1:0] since_a_n;
+  reg have_prev_n;
+  reg [CB-1:0] prev_n_n;
+  reg [TB-1:0] prev_clocks_n;
+  reg [CB-1:0] n1_n;
+  reg [TB-1:0] p1_n;
+  reg [CB-1:0] n2_n;
+  reg [TB-1:0] p2_n;
+  reg [3:0] state_n;
+  reg negative_n;
+  reg [QB-1:0] v01_n;
+  reg [PB-1:0] cross_n;
+  reg [5:0] mul_left_n;
+  reg [MB-1:0] multiplier_n;
+  reg signed [AB-1:0] multiplicand_n;
+  reg signed [PB-1:0] product_n;
+  reg decaying_n;
+  reg last_negative_n;
+  reg last_fit_n;
+
+  // The divider.
+  reg           div_start;
+  reg           div_cancel;
+  reg [NB-1:0]  div_num;
+  reg [DB-1:0]  div_den;
+  wire          div_done;
+  wire [QB-1:0] quotient;
+
+  prenc_divider #(
+    .NUM_BITS      (NB),
+    .DEN_BITS      (DB),
+    .QUOTIENT_BITS (QB)
+  ) u_divider (
+    .clk      (clk),
+    .rst      (rst),
+    .start    (div_start),
+    .cancel    (div_cancel),
+    .num      (div_num),
+    .den      (div_den),
+    .done     (div_done),
+    .quotient (quotient)
+  );
+
+  // Between events: velocity + accel (saturating), the lead, the timers.
+  wire signed [VB+1:0] v_sum = {{2{velocity_reg[VB-1]}}, velocity_reg} +
+                               {{(VB + 2 - AB){accel_reg[AB-1]}}, accel_reg};
+  wire signed [VB+1:0] v_top_wide = $signed({2'b00, V_TOP});
+  wire signed [VB-1:0] v_int = (v_sum > v_top_wide) ? V_TOP :
+                               (v_sum < -v_top_wide) ? -V_TOP : v_sum[VB-1:0];
+  wire                 v_zero = (velocity_reg == {VB{1'b0}});
+  wire                 stop   = !v_zero &&
+                                ((v_int == {VB{1'b0}}) || (v_int[VB-1] != velocity_reg[VB-1]));
+  wire signed [LB-1:0] lead_sum = lead_reg + {{(LB - VB){velocity_reg[VB-1]}}, velocity_reg};
+  wire [LB-1:0]        lead_sum_abs = lead_sum[LB-1] ? -lead_sum : lead_sum;
+  wire [LB-1:0]        lead_abs = lead_reg[LB-1] ? -lead_reg : lead_reg;
+  wire                 timeout = (since_step_reg == TIMER_MAX);
+  wire                 idle = (state_reg == S_IDLE);
+  wire                 mul_done = (mul_left_reg == 6'd0);
+  wire [VB-2:0]        v_abs = velocity_reg[VB-1] ? -velocity_reg[VB-2:0] : velocity_reg[VB-2:0];
+
+  // The multiplier's next bit and the constant-speed test.
+  wire                 mul_bit = multiplier_reg[MB-1];   // loaded left-aligned
+  wire signed [PB-1:0] product_step = {product_reg[PB-2:0], 1'b0} +
+                                      (mul_bit ? {{(PB - AB){multiplicand_reg[AB-1]}},
+                                                  multiplicand_reg}
+                                               : {PB{1'b0}});
+  wire signed [PB:0]   diff = {1'b0, cross_reg} - {product_reg[PB-1], product_reg};
+  wire [PB:0]          diff_abs = diff[PB] ? -diff : diff;
+  wire [CB:0]          n_sum = {1'b0, n1_reg} + {1'b0, n2_reg};
+  wire                 constant = diff_abs < {{(PB - CB){1'b0}}, n_sum};
+  wire                 same = (diff[PB] == last_negative_reg) && last_fit_reg;
+  // The fit's acceleration difference and the velocity it loads.
+  wire signed [QB:0]   d = {1'b0, v01_reg} - {1'b0, quotient};
+  wire [QB:0]          d_abs = d[QB] ? -d : d;
+  wire signed [AB-1:0] accel_fit = negative_reg ? -{1'b0, quotient} : {1'b0, quotient};
+  wire signed [PB:0]   v_fit_sum = (cw_reg ? {{(PB - QB + 1){1'b0}}, v01_reg}
+                                           : -{{(PB - QB + 1){1'b0}}, v01_reg}) +
+                                   {product_reg[PB-1], product_reg};
+  wire signed [PB:0]   v_fit_top = $signed({{(PB - VB + 1){1'b0}}, V_TOP});
+  wire signed [VB-1:0] v_fit = (v_fit_sum > v_fit_top) ? V_TOP :
+                               (v_fit_sum < -v_fit_top) ? -V_TOP : v_fit_sum[VB-1:0];
+  wire                 v_fit_wrong = (v_fit == {VB{1'b0}}) || (v_fit[VB-1] == cw_reg);
+  wire signed [VB-1:0] v_quotient = negative_reg ? -{{(VB - QB){1'b0}}, quotient}
+                                                 : {{(VB - QB){1'b0}}, quotient};
+  // The multiplier's operands, zero-extended to its width (then loaded left-aligned).
+  wire [MB-1:0]        n2_wide = {{(MB - CB){1'b0}}, n2_reg};
+  wire [TB:0]          fit_value = {1'b0, p1_reg[TB-1:1]} + FULL_CLOCKS[TB:0];
+  wire [MB-1:0]        fit_multiplier = {{(MB - TB - 1){1'b0}}, fit_value};
+  // The step: the edge crossed and how far it is from anchor A.
+  wire [CB-1:0]        x = step_cw ? count_reg + 1'b1 : count_reg;
+  wire [CB-1:0]        x_diff = x - x_a_reg;
+  wire [CB-1:0]        n = x_diff[CB-1] ? -x_diff : x_diff;
+  wire                 reversal = moved_reg && (step_cw != cw_reg);
+  wire [MB-1:0]        n_wide = {{(MB - CB){1'b0}}, n};
+  wire                 closes = (n[1:0] == 2'b00) &&
+                                (since_a_reg >= WINDOW[TB-1:0]);
+
+  reg [VB-2:0] speed;
+
+  always @(*) begin
+    velocity_n = velocity_reg;
+    accel_n = accel_reg;
+    valid_n = valid_reg;
+    count_n = count_reg;
+    cw_n = cw_reg;
+    moved_n = moved_reg;
+    step_speed_n = step_speed_reg;
+    since_step_n = since_step_reg;
+    lead_n = lead_reg;
+    have_a_n = have_a_reg;
+    x_a_n = x_a_reg;
+    since_a_n = since_a_reg;
+    have_prev_n = have_prev_reg;
+    prev_n_n = prev_n_reg;
+    prev_clocks_n = prev_clocks_reg;
+    n1_n = n1_reg;
+    p1_n = p1_reg;
+    n2_n = n2_reg;
+    p2_n = p2_reg;
+    state_n = state_reg;
+    negative_n = negative_reg;
+    v01_n = v01_reg;
+    cross_n = cross_reg;
+    mul_left_n = mul_left_reg;
+    multiplier_n = multiplier_reg;
+    multiplicand_n = multiplicand_reg;
+    product_n = product_reg;
+    decaying_n = decaying_reg;
+    last_negative_n = last_negative_reg;
+    last_fit_n = last_fit_reg;
+    div_start = 1'b0;
+    div_cancel = 1'b0;
+    div_num   = {NB{1'b0}};
+    div_den   = {DB{1'b0}};
+
+    // Between events.
+    velocity_n = v_int;
+    if (lead_sum_abs < LEAD_LIMIT) lead_n  = lead_sum;
+    if (since_step_reg != TIMER_MAX) since_step_n  = since_step_reg + 1'b1;
+    if (since_a_reg != TIMER_MAX) since_a_n  = since_a_reg + 1'b1;
+
+    // The serial multiplier: a bit of the multiplier a cycle, MSB first.
+    if ((state_reg == S_CROSS1 || state_reg == S_CROSS2 || state_reg == S_FIT_MUL) &&
+        !mul_done) begin
+      product_n   = product_step;
+      mul_left_n  = mul_left_reg - 1'b1;
+      multiplier_n = multiplier_reg << 1;
+    end
+
+    // The sequencer.
+    case (state_reg)
+      S_MEAN, S_CONSTANT: if (div_done) begin
+        velocity_n    = v_quotient;
+        accel_n  = {AB{1'b0}};
+        valid_n  = 1'b1;
+        state_n  = S_IDLE;
+      end
+      S_CROSS1: if (mul_done) begin
+        cross_n         = product_reg;
+        multiplier_n    = n2_wide << (MB - CB);
+        multiplicand_n  = {{(AB - TB){1'b0}}, p1_reg};
+        mul_left_n      = CB[5:0];
+        product_n       = {PB{1'b0}};
+        state_n         = S_CROSS2;
+      end
+      S_CROSS2: if (mul_done) begin
+        last_negative_n  = diff[PB];
+        last_fit_n       = !constant;
+        div_start = 1'b1;
+        if (constant || !same) begin
+          div_num   = {{(NB - CB - 1 - FRAC){1'b0}}, n_sum, {FRAC{1'b0}}};
+          div_den   = {1'b0, p1_reg} + {1'b0, p2_reg};
+          state_n  = S_CONSTANT;
+        end else begin
+          div_num   = {{(NB - CB - FRAC){1'b0}}, n1_reg, {FRAC{1'b0}}};
+          div_den   = {1'b0, p1_reg};
+          state_n  = S_FIT_V01;
+        end
+      end
+      S_FIT_V01: if (div_done) begin
+        v01_n    = quotient;
+        div_start = 1'b1;
+        div_num   = {{(NB - CB - FRAC){1'b0}}, n2_reg, {FRAC{1'b0}}};
+        div_den   = {1'b0, p2_reg};
+        state_n  = S_FIT_V12;
+      end
+      S_FIT_V12: if (div_done) begin
+        div_start = 1'b1;
+        div_num   = {{(NB - QB - 2){1'b0}}, d_abs, 1'b0};
+        div_den   = {1'b0, p1_reg} + {1'b0, p2_reg};
+        negative_n  = negative_reg ^ d[QB];
+        state_n  = S_FIT_A;
+      end
+      S_FIT_A: if (div_done) begin
+        multiplier_n    = fit_multiplier << (MB - TB - 1);
+        multiplicand_n  = accel_fit;
+        mul_left_n      = TB[5:0] + 6'd1;
+        product_n       = {PB{1'b0}};
+        state_n         = S_FIT_MUL;
+      end
+      S_FIT_MUL: if (mul_done) begin
+        velocity_n    = v_fit;
+        accel_n  = multiplicand_reg;
+        valid_n  = 1'b1;
+        if (v_fit_wrong) begin  // decelerated through 0: it stops there
+          velocity_n    = {VB{1'b0}};
+          accel_n  = {AB{1'b0}};
+        end
+        state_n  = S_IDLE;
+      end
+      S_DECAY: if (div_done) begin
+        accel_n  = negative_reg ? {1'b0, quotient} : -{1'b0, quotient};
+        state_n  = S_IDLE;
+      end
+      default: begin
+      end
+    endcase
+
+    // A stop: integrating reached 0, or no step for 2^TIMER_BITS - 1 clocks.
+    if (stop || timeout) begin
+      velocity_n = {VB{1'b0}};
+      accel_n       = {AB{1'b0}};
+      valid_n       = 1'b1;
+      decaying_n    = 1'b0;
+      have_prev_n   = 1'b0;
+      last_fit_n    = 1'b0;
+      step_speed_n  = {(VB - 1){1'b0}};
+      div_cancel = 1'b1;
+      div_start = 1'b0;
+      state_n  = S_IDLE;
+    end else if (idle && !decaying_reg && !step && !illegal && !v_zero && lead_abs >= OVERDUE) begin
+      // Overdue: decay to 0 over a third of the time since the step.
+      negative_n  = velocity_reg[VB-1];
+      div_start = 1'b1;
+      div_num   = {{(NB - VB - 1){1'b0}}, {1'b0, v_abs, 1'b0} + {2'b00, v_abs}};
+      div_den   = {1'b0, since_step_reg};
+      state_n     = S_DECAY;
+      decaying_n  = 1'b1;
+    end
+
+    // Events, which win over all the above.
+    speed = velocity_n[VB-1] ? -velocity_n[VB-2:0] : velocity_n[VB-2:0];
+    if (illegal) begin
+      velocity_n = {VB{1'b0}};
+      accel_n       = {AB{1'b0}};
+      valid_n       = 1'b0;
+      decaying_n    = 1'b0;
+      have_a_n      = 1'b0;
+      have_prev_n   = 1'b0;
+      last_fit_n    = 1'b0;
+      moved_n       = 1'b0;
+      since_step_n  = {{(TB - 1){1'b0}}, 1'b1};
+      lead_n        = {LB{1'b0}};
+      div_cancel = 1'b1;
+      div_start = 1'b0;
+      state_n  = S_IDLE;
+    end else if (step) begin
+      count_n       = step_cw ? count_reg + 1'b1 : count_reg - 1'b1;
+      cw_n          = step_cw;
+      moved_n       = 1'b1;
+      since_step_n  = {{(TB - 1){1'b0}}, 1'b1};
+      lead_n        = {LB{1'b0}};
+      if (decaying_reg) begin
+        decaying_n  = 1'b0;
+        accel_n     = {AB{1'b0}};
+        if (state_reg == S_DECAY) begin
+          div_cancel = 1'b1;
+          div_start = 1'b0;
+          state_n  = S_IDLE;
+        end
+      end
+      if (reversal) begin
+        speed = step_speed_reg;
+        velocity_n = step_cw ? {1'b0, step_speed_reg} : -{1'b0, step_speed_reg};
+        have_prev_n  = 1'b0;
+        last_fit_n   = 1'b0;
+        have_a_n     = 1'b1;
+        x_a_n        = x;
+        since_a_n    = {{(TB - 1){1'b0}}, 1'b1};
+        div_cancel = 1'b1;
+        div_start = 1'b0;
+        state_n  = S_IDLE;
+      end else if (!have_a_reg || since_a_reg == TIMER_MAX) begin
+        have_prev_n  = 1'b0;
+        last_fit_n   = 1'b0;
+        have_a_n     = 1'b1;
+        x_a_n        = x;
+        since_a_n    = {{(TB - 1){1'b0}}, 1'b1};
+      end else if (idle) begin
+        negative_n  = !step_cw;
+        if (closes && have_prev_reg) begin
+          n1_n            = n;
+          p1_n            = since_a_reg;
+          n2_n            = prev_n_reg;
+          p2_n            = prev_clocks_reg;
+          multiplier_n    = n_wide << (MB - CB);
+          multiplicand_n  = {{(AB - TB){1'b0}}, prev_clocks_reg};
+          mul_left_n      = CB[5:0];
+          product_n       = {PB{1'b0}};
+          state_n         = S_CROSS1;
+        end else if (closes || !have_prev_reg) begin
+          div_start = 1'b1;
+          div_num   = {{(NB - CB - FRAC){1'b0}}, n, {FRAC{1'b0}}};
+          div_den   = {1'b0, since_a_reg};
+          state_n  = S_MEAN;
+        end
+        if (closes) begin
+          have_prev_n    = 1'b1;
+          prev_n_n       = n;
+          prev_clocks_n  = since_a_reg;
+          x_a_n          = x;
+          since_a_n      = {{(TB - 1){1'b0}}, 1'b1};
+        end
+      end
+      step_speed_n  = speed;
+    end
+
+  end
+
+  always @(posedge clk) begin
+    if (rst) begin
+      velocity_reg <= {VB{1'b0}};
+      accel_reg <= {AB{1'b0}};
+      valid_reg <= 1'b0;
+      count_reg <= {CB{1'b0}};
+      cw_reg <= 1'b1;
+      moved_reg <= 1'b0;
+      step_speed_reg <= {(VB - 1){1'b0}};
+      since_step_reg <= {TB{1'b0}};
+      lead_reg <= {LB{1'b0}};
+      have_a_reg <= 1'b0;
+      x_a_reg <= {CB{1'b0}};
+      since_a_reg <= {TB{1'b0}};
+      have_prev_reg <= 1'b0;
+      prev_n_reg <= {CB{1'b0}};
+      prev_clocks_reg <= {TB{1'b0}};
+      n1_reg <= {CB{1'b0}};
+      p1_reg <= {TB{1'b0}};
+      n2_reg <= {CB{1'b0}};
+      p2_reg <= {TB{1'b0}};
+      state_reg <= S_IDLE;
+      negative_reg <= 1'b0;
+      v01_reg <= {QB{1'b0}};
+      cross_reg <= {PB{1'b0}};
+      mul_left_reg <= 6'd0;
+      multiplier_reg <= {MB{1'b0}};
+      multiplicand_reg <= {AB{1'b0}};
+      product_reg <= {PB{1'b0}};
+      decaying_reg <= 1'b0;
+      last_negative_reg <= 1'b0;
+      last_fit_reg <= 1'b0;
+    end else begin
+      velocity_reg <= velocity_n;
+      accel_reg <= accel_n;
+      valid_reg <= valid_n;
+      count_reg <= count_n;
+      cw_reg <= cw_n;
+      moved_reg <= moved_n;
+      step_speed_reg <= step_speed_n;
+      since_step_reg <= since_step_n;
+      lead_reg <= lead_n;
+      have_a_reg <= have_a_n;
+      x_a_reg <= x_a_n;
+      since_a_reg <= since_a_n;
+      have_prev_reg <= have_prev_n;
+      prev_n_reg <= prev_n_n;
+      prev_clocks_reg <= prev_clocks_n;
+      n1_reg <= n1_n;
+      p1_reg <= p1_n;
+      n2_reg <= n2_n;
+      p2_reg <= p2_n;
+      state_reg <= state_n;
+      negative_reg <= negative_n;
+      v01_reg <= v01_n;
+      cross_reg <= cross_n;
+      mul_left_reg <= mul_left_n;
+      multiplier_reg <= multiplier_n;
+      multiplicand_reg <= multiplicand_n;
+      product_reg <= product_n;
+      decaying_reg <= decaying_n;
+      last_negative_reg <= last_negative_n;
+      last_fit_reg <= last_fit_n;
+    end
+  end
+
+  assign velocity = velocity_reg;
+  assign accel    = accel_reg;
+  assign valid    = valid_reg;
+
+endmodule
+
+`resetall

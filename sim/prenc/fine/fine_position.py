@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Model of rtl/fine/prenc_fine_position.v: the verified position with the fraction of
+the quarter passed, extrapolated to the instant a consumer asks.
+
+Inputs each cycle: the core's pos_hyb and pos_valid; the quadrature decoder's
+registered step and step_cw (the block delays them STEP_DELAY cycles, so that the
+step meets pos_hyb, which shows it 4 cycles after the decoder); the velocity and its
+valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
+
+- travel: the velocity integrated since pos_hyb's last step (FRAC bits, saturating
+  at 2 quarters).
+- The fraction of the quarter: the last step crossed the quarter's lower edge (CW) or
+  its upper edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-F). So while
+  pos_valid the fine position's quarter is pos_hyb's: when the next edge is late, the
+  fraction holds at the quarter's end.
+- Extrapolation over the pipeline: + velocity * LOOKAHEAD_HALVES / 2 (clocks from the
+  pins to this block's output, and half a clock for the edge's unknown place within
+  its clock). It can take the fine position past the quarter's edge by at most
+  |velocity| * LOOKAHEAD_HALVES / 2 quarters: the only way it leaves the verified
+  quarter. LOOKAHEAD_HALVES = 0 turns it off.
+- Without a valid velocity: the fraction is the quarter's middle, nothing extrapolated,
+  and `interpolated` is 0.
+
+fine_pos = pos_hyb * 2^F + the fraction in F bits (rounded), modulo 2^(N + 2 + F); the
+outputs are registered (one cycle).
+"""
+
+from __future__ import annotations
+
+from .velocity import FRAC, LEAD_LIMIT
+
+STEP_DELAY = 3   # decoder step -> the cycle before pos_hyb shows it (prenc_position: 4)
+
+
+class FinePosition:
+    def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0):
+        if not 0 <= fine_bits <= 8:
+            raise ValueError(f"fine_bits = {fine_bits} is out of range 0..8")
+        if not 0 <= lookahead_halves <= 255:
+            raise ValueError(f"lookahead_halves = {lookahead_halves} is out of range 0..255")
+        self.n = n
+        self.fine_bits = fine_bits
+        self.lookahead_halves = lookahead_halves
+        self.width = n + 2 + fine_bits
+        self.reset()
+
+    def reset(self) -> None:
+        self.step_d = [0] * STEP_DELAY
+        self.cw_d = [1] * STEP_DELAY
+        self.travel = 0
+        self.cw = 1
+        self.fine_pos = 0
+        self.valid = 0
+        self.interpolated = 0
+
+    def fraction(self, velocity: int, velocity_valid: int) -> int:
+        """The fraction of the quarter in F bits (and the extrapolation, signed)."""
+        f = self.fine_bits
+        if not velocity_valid:
+            return (1 << f) >> 1
+        edge = 0 if self.cw else 1 << FRAC
+        top = (1 << FRAC) - (1 << (FRAC - f))
+        frac = max(0, min(top, edge + self.travel))
+        frac += (velocity * self.lookahead_halves) >> 1
+        return (frac + (1 << (FRAC - f - 1))) >> (FRAC - f)
+
+    def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
+              velocity_valid: int, rst: int = 0) -> None:
+        if rst:
+            self.reset()
+            return
+        mask = (1 << self.width) - 1
+        self.fine_pos = ((pos_hyb << self.fine_bits) + self.fraction(velocity, velocity_valid)) & mask
+        self.valid = pos_valid
+        self.interpolated = int(pos_valid and velocity_valid)
+        if self.step_d[-1]:
+            self.travel, self.cw = 0, self.cw_d[-1]
+        else:
+            travel = self.travel + velocity
+            if abs(travel) < LEAD_LIMIT:
+                self.travel = travel
+        self.step_d = [step] + self.step_d[:-1]
+        self.cw_d = [step_cw] + self.cw_d[:-1]

@@ -1,0 +1,211 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Fine position and velocity against the truth, beside three baselines (issue 37).
+
+A scenario is a trajectory (the shaft's angle at every clock) and a disc, ideal or
+printed (prenc.virtual.printing). From its sync track this module makes what the
+fine blocks see from the core:
+
+- the quadrature decoder's registered step (and direction), from A and B through the
+  input conditioner (2 + FILTER clocks, clean signals) and the decoder (1 clock);
+- pos_hyb, 4 clocks after the decoder (prenc_position), counted from the sync track,
+  and pos_valid = 1: the core is taken as locked, so that what is measured is the
+  fine blocks alone (the core's promise has its own tests and goals).
+
+Then it runs the models of rtl/fine/ (prenc.fine.velocity, prenc.fine.fine_position)
+clock by clock, and three velocity estimators that users pick instead, each with the
+same interpolation and extrapolation for its fine position:
+
+- period: the time between the last two same-type edges (a full cycle), bounded
+  by the time since the last edge (the dVRK firmware's running period);
+- mixed:  every SAMPLE_CLOCKS, the edges counted since the last sample over the time
+  between the last edge before each sample (Petrella and Tursini's mixed method, as
+  SimpleFOC uses it); no edge: bounded by the time since the last edge;
+- count:  every SAMPLE_CLOCKS, the edges counted over SAMPLE_CLOCKS (differencing the
+  count at a fixed rate).
+
+Errors are against the true angle at the clock the output is read (the instant a
+consumer asks), in slots: RMS and max over the measured clocks; velocity errors in
+per cent of the true speed.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..fine.fine_position import STEP_DELAY, FinePosition
+from ..fine.velocity import FRAC, Velocity
+from .encoder import Disc
+from .printing import Printing
+from .trajectory import Trajectory
+
+CLK_HZ = 30e6
+N = 10
+FILTER = 2
+FINE_BITS = 8
+WINDOW = 2048
+SAMPLE_CLOCKS = 3000          # the baselines' sampling period: 100 us at 30 MHz (10 kHz)
+DECODER_DELAY = 2 + FILTER + 1  # pins -> the decoder's registered step
+POSITION_DELAY = 4              # decoder -> pos_hyb
+# Clocks from the pins to the fine output (and the half clock of an edge's unknown place).
+LOOKAHEAD_HALVES = 2 * (DECODER_DELAY + POSITION_DELAY + 1) + 1
+
+PRINTED = Printing(edge_error=0.05, phase_deg=10, duty_a=0.45, duty_b=0.55, eccentricity=0.2, seed=7)
+
+
+def rpm(value: float) -> float:
+    """Slots per second at `value` rpm (N = 10)."""
+    return value / 60.0 * (1 << N)
+
+
+@dataclass
+class Scenario:
+    name: str
+    trajectory: Trajectory
+    measure_from: int           # first clock measured (after the estimators settled)
+    stop_clock: int | None = None  # where the disc stops (the stop scenario)
+    printing: Printing | None = None
+    extra: dict = field(default_factory=dict)
+
+
+@dataclass
+class Sync:
+    """What the fine blocks get from the core, clock by clock."""
+
+    step: np.ndarray       # the decoder's registered step
+    cw: np.ndarray         # its direction
+    pos_hyb: np.ndarray    # the core's pos_hyb (pos_valid = 1)
+
+
+def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N) -> Sync:
+    """The decoder's steps and pos_hyb for a clean run of the sync track."""
+    disc = Disc(n, printing=printing)
+    if printing is None:
+        a, b = disc.sync(theta)
+    else:
+        a, b = printing.sync(theta, disc.length)
+    q = (a.astype(np.int64) << 1) | (1 - (a ^ b))
+    delta = (q[1:] - q[:-1]) & 3
+    if np.any(delta == 2):
+        raise ValueError("the trajectory is too fast for the clock: a quadrature state was missed")
+    move = np.zeros(len(theta), dtype=np.int64)
+    move[1:] = np.where(delta == 1, 1, np.where(delta == 3, -1, 0))
+    step = np.zeros(len(theta), dtype=np.int8)
+    cw = np.ones(len(theta), dtype=np.int8)
+    d = DECODER_DELAY
+    step[d:] = (move[:-d] != 0)
+    cw[d:] = (move[:-d] >= 0)
+    # pos_hyb: the sync track's hybrid position, counted from the first sample.
+    seen0 = theta[0] if printing is None else printing.seen(theta[:1], disc.length)[0]
+    h0 = 4 * int(math.floor(seen0)) + int(q[0] - (4 * math.floor(seen0) % 4)) % 4
+    h = h0 + np.cumsum(move)
+    pos = np.full(len(theta), h0, dtype=np.int64)
+    pos[d + POSITION_DELAY:] = h[:-(d + POSITION_DELAY)]
+    return Sync(step, cw, pos % (4 << n))
+
+
+def run_fine(sync: Sync, window: int = WINDOW, fine_bits: int = FINE_BITS,
+             lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N) -> dict[str, np.ndarray]:
+    """The models of prenc_velocity and prenc_fine_position, clock by clock."""
+    vel = Velocity(window=window)
+    fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
+    total = len(sync.step)
+    v_out = np.zeros(total)
+    v_valid = np.zeros(total, dtype=np.int8)
+    fine_pos = np.zeros(total, dtype=np.int64)
+    interpolated = np.zeros(total, dtype=np.int8)
+    step, cw, pos = sync.step.tolist(), sync.cw.tolist(), sync.pos_hyb.tolist()
+    scale = 1.0 / (1 << FRAC)
+    for c in range(total):
+        fine.clock(pos[c], 1, step[c], cw[c], vel.velocity, vel.valid)
+        vel.clock(step[c], cw[c])
+        v_out[c] = vel.velocity * scale
+        v_valid[c] = vel.valid
+        fine_pos[c] = fine.fine_pos
+        interpolated[c] = fine.interpolated
+    return {"velocity": v_out, "velocity_valid": v_valid, "fine": fine_pos, "interpolated": interpolated}
+
+
+# -- baselines --------------------------------------------------------------------
+
+def _edges(sync: Sync) -> tuple[np.ndarray, np.ndarray]:
+    clocks = np.flatnonzero(sync.step)
+    direction = np.where(sync.cw[clocks] == 1, 1, -1)
+    return clocks, direction
+
+
+def period_velocity(sync: Sync) -> np.ndarray:
+    """Quarters per clock: 4 / (time between same-type edges), bounded by 1 / (time
+    since the last edge); 1 / (last interval) before four edges or after a reversal."""
+    total = len(sync.step)
+    clocks, direction = _edges(sync)
+    latched = np.zeros(total)
+    last_edge = np.full(total, -1, dtype=np.int64)
+    for i, c in enumerate(clocks):
+        if i >= 4 and np.all(direction[i - 4:i + 1] == direction[i]):
+            v = 4.0 / (c - clocks[i - 4])
+        elif i >= 1:
+            v = 1.0 / (c - clocks[i - 1])
+        else:
+            v = 0.0
+        latched[c:] = direction[i] * v
+        last_edge[c:] = c
+    since = np.arange(total) - last_edge
+    bound = np.where(last_edge >= 0, 1.0 / np.maximum(since, 1), 0.0)
+    return np.sign(latched) * np.minimum(np.abs(latched), bound)
+
+
+def sampled_velocity(sync: Sync, mixed: bool, sample: int = SAMPLE_CLOCKS) -> np.ndarray:
+    """Every `sample` clocks: edges counted over the time between the last edges before
+    the two samples (mixed) or over the sampling period (count)."""
+    total = len(sync.step)
+    signed = np.where(sync.step == 1, np.where(sync.cw == 1, 1, -1), 0)
+    count = np.cumsum(signed)
+    edge_clock = np.maximum.accumulate(np.where(sync.step == 1, np.arange(total), -1))
+    out = np.zeros(total)
+    v, prev = 0.0, 0
+    for s in range(sample, total, sample):
+        dn = count[s] - count[prev]
+        if not mixed:
+            v = dn / sample
+        elif dn != 0:
+            v = dn / max(edge_clock[s] - edge_clock[prev], 1)
+        elif edge_clock[s] >= 0:
+            v = math.copysign(min(abs(v), 1.0 / max(s - edge_clock[s], 1)), v)
+        out[s:] = v
+        prev = s
+    return out
+
+
+def interpolate(sync: Sync, velocity: np.ndarray, fine_bits: int = FINE_BITS,
+                lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N) -> np.ndarray:
+    """The same fraction and extrapolation as prenc_fine_position, in floating point,
+    for a baseline's velocity (quarters per clock)."""
+    total = len(sync.step)
+    aligned = np.zeros(total, dtype=np.int8)   # the step as pos_hyb shows it
+    aligned_cw = np.ones(total, dtype=np.int8)
+    d = STEP_DELAY + 1
+    aligned[d:] = sync.step[:-d]
+    aligned_cw[d:] = sync.cw[:-d]
+    last = np.maximum.accumulate(np.where(aligned == 1, np.arange(total), 0))
+    moved = np.concatenate([[0.0], np.cumsum(velocity)[:-1]])   # travel integrates the velocity
+    travel = moved - moved[last]
+    edge = np.where(aligned_cw[last] == 1, 0.0, 1.0)
+    top = 1.0 - 2.0 ** -fine_bits
+    frac = np.clip(edge + travel, 0.0, top) + np.concatenate([[0.0], velocity[:-1]]) * lookahead_halves / 2
+    return np.floor((sync.pos_hyb + frac) * (1 << fine_bits) + 0.5)   # rounded, as the RTL
+
+
+# -- scoring ----------------------------------------------------------------------
+
+def position_error(quarters: np.ndarray, theta: np.ndarray, n: int = N) -> np.ndarray:
+    """(position in quarters) - truth, in slots, wrapped to +- half a turn."""
+    length = 1 << n
+    err = quarters / 4.0 - theta
+    return (err + length / 2) % length - length / 2
+
+
+def stats(err: np.ndarray) -> tuple[float, float]:
+    return float(np.sqrt(np.mean(err * err))), float(np.max(np.abs(err)))
