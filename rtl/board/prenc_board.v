@@ -126,6 +126,8 @@ module prenc_board #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
+  wire          sync_step;     // for prenc_fine (issue 37), not yet on this board
+  wire          sync_illegal;
   wire          clear_errors;
 
   prenc_core #(
@@ -166,7 +168,9 @@ module prenc_board #(
     .track2_valid  (track2_valid),
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
-    .sync_errors   (sync_errors)
+    .sync_errors   (sync_errors),
+    .sync_step     (sync_step),
+    .sync_illegal  (sync_illegal)
   );
 
   wire [15:0] link_errors;
@@ -287,7 +291,7 @@ module prenc_board #(
   assign mode            = mode_now;
 
   wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy, biss_busy, biss_latch,
-                     turns_placed, turns, turns_full};
+                     turns_placed, turns, turns_full, sync_step, sync_illegal};
 
 endmodule
 

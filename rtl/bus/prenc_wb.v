@@ -130,6 +130,8 @@ module prenc_wb #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
+  wire          sync_step;
+  wire          sync_illegal;
 
   prenc_core #(
     .N           (N),
@@ -169,7 +171,9 @@ module prenc_wb #(
     .track2_valid  (track2_valid),
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
-    .sync_errors   (sync_errors)
+    .sync_errors   (sync_errors),
+    .sync_step     (sync_step),
+    .sync_illegal  (sync_illegal)
   );
 
   wire [6:0] status = {track2_valid, track1_valid, direction, mode, pos_valid};
@@ -262,7 +266,7 @@ module prenc_wb #(
   end
 
   assign wb_err_o = 1'b0;
-  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3]};
+  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3], sync_step, sync_illegal};
   assign irq      = |(irq_status & irq_enable);
 
 endmodule

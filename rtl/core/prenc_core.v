@@ -65,6 +65,10 @@
 //   track1_pos, track2_pos   the position each track reads, valid with its flag
 //   track1_errors, track2_errors   readings that disagreed with the prediction
 //   sync_errors    illegal quadrature transitions
+//   sync_step, sync_illegal   the quadrature decoder's registered step (its direction
+//                  is `direction`) and illegal transition, each a one-clock pulse: the
+//                  sync track's timing, for prenc_fine (velocity, fine position);
+//                  pos_hyb shows a step 4 clocks later
 
 `resetall
 `timescale 1ns / 1ps
@@ -109,7 +113,9 @@ module prenc_core #(
   output wire                   track2_valid,
   output wire [ERROR_WIDTH-1:0] track1_errors,
   output wire [ERROR_WIDTH-1:0] track2_errors,
-  output wire [ERROR_WIDTH-1:0] sync_errors
+  output wire [ERROR_WIDTH-1:0] sync_errors,
+  output wire                   sync_step,
+  output wire                   sync_illegal
 );
 
   generate
@@ -473,12 +479,14 @@ module prenc_core #(
   );
 
   wire unused_ok = &{1'b0, strobe_cw, strobe_moved, strobe_t2, word1, word2,
-                     conv1_valid, conv2_valid, quarter, step, illegal};
+                     conv1_valid, conv2_valid, quarter};
 
   assign pos_abs      = slot_out + offset;
   assign pos_hyb      = {pos_abs, quarter_out};
   assign position     = resolution ? pos_hyb : {2'b00, pos_abs};
   assign direction    = step_cw;
+  assign sync_step    = step;
+  assign sync_illegal = illegal;
   assign track1_pos   = pos_abs;
   assign track2_pos   = pos_abs;
   assign track1_valid = pos_valid & supported[0];

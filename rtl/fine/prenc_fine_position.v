@@ -6,7 +6,7 @@
 //   bits of a quarter, saturating at 2 quarters). The decoder's step is delayed
 //   STEP_DELAY = 3 cycles, so that travel restarts on the cycle pos_hyb shows the step.
 // - The fraction: the last step crossed the quarter's lower edge (CW) or its upper
-//   edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-F). While pos_valid the fine
+//   edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-48). While pos_valid the fine
 //   position's quarter is pos_hyb's: when the next edge is late, the fraction holds at
 //   the quarter's end.
 // - The extrapolation: + velocity * LOOKAHEAD_HALVES / 2, the clocks from the pins to
@@ -15,7 +15,8 @@
 //   |velocity| * LOOKAHEAD_HALVES / 2 quarters. LOOKAHEAD_HALVES = 0 turns it off.
 // - Without a valid velocity: the fraction is the quarter's middle, nothing is
 //   extrapolated, and `interpolated` is 0.
-// fine_pos = pos_hyb * 2^F + the fraction rounded to F bits, modulo 2^(N + 2 + F);
+// fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
+// h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter;
 // registered, one cycle after pos_hyb. Model: prenc.fine.fine_position.FinePosition.
 //
 // Parameters
@@ -78,10 +79,8 @@ module prenc_fine_position #(
 
   localparam signed [LB-1:0] LEAD_LIMIT = {{(LB - FRAC - 2){1'b0}}, 2'b10, {FRAC{1'b0}}};
   localparam signed [LB:0]   ONE        = {{(LB - FRAC){1'b0}}, 1'b1, {FRAC{1'b0}}};
-  localparam signed [LB:0]   TOP        = ONE - (ONE >>> F);    // 1 - 2^-F
+  localparam signed [LB:0]   TOP        = ONE - 1'b1;           // just below the next quarter
   localparam signed [XB-1:0] LOOKAHEAD  = {{(XB - 9){1'b0}}, LOOKAHEAD_HALVES[8:0]};
-  localparam signed [XB-1:0] ONE_X      = {{(XB - FRAC - 1){1'b0}}, 1'b1, {FRAC{1'b0}}};
-  localparam signed [XB-1:0] HALF_LSB   = ONE_X >>> (F + 1);   // rounds to F bits
   localparam [W-1:0]         MIDDLE     = (F == 0) ? {W{1'b0}}
                                                    : ({{(W - 1){1'b0}}, 1'b1} << (F - 1));
 
@@ -93,21 +92,20 @@ module prenc_fine_position #(
   reg                  valid_reg;
   reg                  interpolated_reg;
 
-  // The fraction of the quarter, clamped to it, then extrapolated and rounded.
+  // The fraction of the quarter, clamped to it, then extrapolated and truncated.
   wire signed [LB:0]   edge_travel = (cw_reg ? {(LB + 1){1'b0}} : ONE) +
                                      {travel_reg[LB-1], travel_reg};
   wire signed [LB:0]   clamped     = edge_travel[LB] ? {(LB + 1){1'b0}} :
                                      (edge_travel > TOP) ? TOP : edge_travel;
   wire signed [XB-1:0] v_wide      = {{(XB - 51){velocity[50]}}, velocity};
   wire signed [XB-1:0] ext_twice   = v_wide * LOOKAHEAD;
-  wire signed [XB-1:0] sum         = {{(XB - LB - 1){1'b0}}, clamped} + (ext_twice >>> 1) +
-                                     HALF_LSB;
-  wire signed [XB-1:0] rounded     = sum >>> (FRAC - F);
-  wire [W-1:0]         fraction    = velocity_valid ? rounded[W-1:0] : MIDDLE;
+  wire signed [XB-1:0] sum         = {{(XB - LB - 1){1'b0}}, clamped} + (ext_twice >>> 1);
+  wire signed [XB-1:0] truncated   = sum >>> (FRAC - F);
+  wire [W-1:0]         fraction    = velocity_valid ? truncated[W-1:0] : MIDDLE;
   wire [W-1:0]         base        = {pos_hyb, {F{1'b0}}};
   wire signed [LB-1:0] travel_sum  = travel_reg + {{(LB - 51){velocity[50]}}, velocity};
   wire [LB-1:0]        travel_abs  = travel_sum[LB-1] ? -travel_sum : travel_sum;
-  wire                 unused_ok   = &{1'b0, rounded[XB-1:W]};  // the quarters above pos_hyb's wrap
+  wire                 unused_ok   = &{1'b0, truncated[XB-1:W]};  // the quarters above pos_hyb's wrap
 
   always @(posedge clk) begin
     fine_pos_reg     <= base + fraction;

@@ -10,7 +10,7 @@ valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 - travel: the velocity integrated since pos_hyb's last step (FRAC bits, saturating
   at 2 quarters).
 - The fraction of the quarter: the last step crossed the quarter's lower edge (CW) or
-  its upper edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-F). So while
+  its upper edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-48). So while
   pos_valid the fine position's quarter is pos_hyb's: when the next edge is late, the
   fraction holds at the quarter's end.
 - Extrapolation over the pipeline: + velocity * LOOKAHEAD_HALVES / 2 (clocks from the
@@ -21,8 +21,9 @@ valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 - Without a valid velocity: the fraction is the quarter's middle, nothing extrapolated,
   and `interpolated` is 0.
 
-fine_pos = pos_hyb * 2^F + the fraction in F bits (rounded), modulo 2^(N + 2 + F); the
-outputs are registered (one cycle).
+fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
+h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter. The outputs
+are registered (one cycle).
 """
 
 from __future__ import annotations
@@ -54,15 +55,15 @@ class FinePosition:
         self.interpolated = 0
 
     def fraction(self, velocity: int, velocity_valid: int) -> int:
-        """The fraction of the quarter in F bits (and the extrapolation, signed)."""
+        """The fraction of the quarter in F bits, truncated (and the extrapolation, signed)."""
         f = self.fine_bits
         if not velocity_valid:
             return (1 << f) >> 1
         edge = 0 if self.cw else 1 << FRAC
-        top = (1 << FRAC) - (1 << (FRAC - f))
+        top = (1 << FRAC) - 1
         frac = max(0, min(top, edge + self.travel))
         frac += (velocity * self.lookahead_halves) >> 1
-        return (frac + (1 << (FRAC - f - 1))) >> (FRAC - f)
+        return frac >> (FRAC - f)
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
               velocity_valid: int, rst: int = 0) -> None:

@@ -193,9 +193,8 @@ def interpolate(sync: Sync, velocity: np.ndarray, fine_bits: int = FINE_BITS,
     moved = np.concatenate([[0.0], np.cumsum(velocity)[:-1]])   # travel integrates the velocity
     travel = moved - moved[last]
     edge = np.where(aligned_cw[last] == 1, 0.0, 1.0)
-    top = 1.0 - 2.0 ** -fine_bits
-    frac = np.clip(edge + travel, 0.0, top) + np.concatenate([[0.0], velocity[:-1]]) * lookahead_halves / 2
-    return np.floor((sync.pos_hyb + frac) * (1 << fine_bits) + 0.5)   # rounded, as the RTL
+    frac = np.clip(edge + travel, 0.0, 1.0 - 2.0 ** -48) + np.concatenate([[0.0], velocity[:-1]]) * lookahead_halves / 2
+    return np.floor((sync.pos_hyb + frac) * (1 << fine_bits))   # truncated, as the RTL
 
 
 # -- scoring ----------------------------------------------------------------------

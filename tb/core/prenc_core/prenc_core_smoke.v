@@ -53,6 +53,8 @@ module prenc_core_smoke #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
+  wire          sync_step;
+  wire          sync_illegal;
 
   prenc_core #(
     .N        (N),
@@ -81,7 +83,9 @@ module prenc_core_smoke #(
     .track2_valid  (track2_valid),
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
-    .sync_errors   (sync_errors)
+    .sync_errors   (sync_errors),
+    .sync_step     (sync_step),
+    .sync_illegal  (sync_illegal)
   );
 
   // The disc's position as the outputs show it: LATENCY clocks behind the pins.
