@@ -3,7 +3,7 @@
 #
 #   make demo    generate the ROM, run the virtual encoder, print and plot what it read
 #   make test    every test, on Verilator and Icarus
-#   make bench   benchmarks, side by side in one run
+#   make bench   benchmarks, side by side in one run (ARGS=fine: section 9 alone)
 #   make lint    verilator --lint-only -Wall on every top's file list
 #   make rom     the default conversion ROM into build/rom/
 #   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200]
@@ -71,7 +71,7 @@ demo: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/demo.py --out build/demo
 
 bench: $(STAMP) sysdeps
-	@$(WITH_VERILATOR) $(PY) scripts/bench.py
+	@$(WITH_VERILATOR) $(PY) scripts/bench.py $(ARGS)
 
 lint: $(STAMP)
 	@for f in rtl/*/*.f; do \

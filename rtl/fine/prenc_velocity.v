@@ -13,13 +13,16 @@
 //   is the mean over both windows and accel 0. Otherwise a parabola through the
 //   three anchors: a = 2 (n1/P1 - n2/P2) / (P1 + P2), velocity = n1/P1 + a (P1/2 +
 //   FULL_CLOCKS) on the cycle it is loaded. Between updates velocity += accel.
-// - Before a window closes: the mean velocity since the window's first step.
-// - A reversal restarts the windows; the velocity takes the new sign at once, with
-//   the speed the last edge was crossed at. Integrating accel never crosses 0: it
-//   stops there. The velocity is 0 or has the sign of the last step.
+// - Before a window closes (after reset, a stop, an illegal transition): the mean
+//   velocity since the window's first step.
+// - A reversal restarts the windows; the velocity takes the new sign at once, with the
+//   speed the last edge was crossed at, and the acceleration goes on (no means while
+//   it is known). Integrating to 0 holds the velocity there, acceleration kept, for
+//   the reversal; a step the same way drops the acceleration; no step for 4 times as
+//   long as it took to reach 0 is a stop. The velocity is 0 or has the last step's sign.
 // - Overdue (the velocity predicts 1.5 quarters since the last step and none came):
-//   accel = -3 v / E, which reaches 0 at two predicted quarter periods. No step for
-//   2^TIMER_BITS - 1 clocks: 0 as well.
+//   accel = -3 v / E, which reaches 0, a stop, at two predicted quarter periods. No
+//   step for 2^TIMER_BITS - 1 clocks: a stop as well. A stop reads 0 (valid).
 // - An illegal transition drops the velocity (`valid` 0) until the next estimate.
 //
 // One serial divider (prenc_divider) and a serial multiplier do the arithmetic: an
@@ -97,6 +100,8 @@ module prenc_velocity #(
   reg cw_reg;
   reg moved_reg;
   reg [VB-2:0] step_speed_reg;
+  reg held_reg;
+  reg [TB-1:0] zero_at_reg;
   reg [TB-1:0] since_step_reg;
   reg signed [LB-1:0] lead_reg;
   reg have_a_reg;
@@ -127,6 +132,8 @@ module prenc_velocity #(
   reg cw_n;
   reg moved_n;
   reg [VB-2:0] step_speed_n;
+  reg held_n;
+  reg [TB-1:0] zero_at_n;
   reg [TB-1:0] since_step_n;
   reg signed [LB-1:0] lead_n;
   reg have_a_n;
@@ -181,8 +188,14 @@ module prenc_velocity #(
   wire signed [VB-1:0] v_int = (v_sum > v_top_wide) ? V_TOP :
                                (v_sum < -v_top_wide) ? -V_TOP : v_sum[VB-1:0];
   wire                 v_zero = (velocity_reg == {VB{1'b0}});
-  wire                 stop   = !v_zero &&
-                                ((v_int == {VB{1'b0}}) || (v_int[VB-1] != velocity_reg[VB-1]));
+  // Without a step the velocity never crosses 0: decaying, it stops there; else it is
+  // held at 0 with its acceleration, for the reversal that should come. Held for 4 times
+  // as long as it took to get there, the disc has stopped.
+  wire                 crossing = !v_zero &&
+                                  ((v_int == {VB{1'b0}}) || (v_int[VB-1] != velocity_reg[VB-1]));
+  wire                 stop   = (crossing && decaying_reg) ||
+                                (held_reg && {2'b00, since_step_reg} >= {zero_at_reg, 2'b00});
+  wire                 hold   = crossing && !decaying_reg;
   wire signed [LB-1:0] lead_sum = lead_reg + {{(LB - VB){velocity_reg[VB-1]}}, velocity_reg};
   wire [LB-1:0]        lead_sum_abs = lead_sum[LB-1] ? -lead_sum : lead_sum;
   wire [LB-1:0]        lead_abs = lead_reg[LB-1] ? -lead_reg : lead_reg;
@@ -238,6 +251,8 @@ module prenc_velocity #(
     cw_n = cw_reg;
     moved_n = moved_reg;
     step_speed_n = step_speed_reg;
+    held_n = held_reg;
+    zero_at_n = zero_at_reg;
     since_step_n = since_step_reg;
     lead_n = lead_reg;
     have_a_n = have_a_reg;
@@ -263,87 +278,87 @@ module prenc_velocity #(
     last_fit_n = last_fit_reg;
     div_start = 1'b0;
     div_cancel = 1'b0;
-    div_num   = {NB{1'b0}};
-    div_den   = {DB{1'b0}};
+    div_num = {NB{1'b0}};
+    div_den = {DB{1'b0}};
 
     // Between events.
-    velocity_n = v_int;
-    if (lead_sum_abs < LEAD_LIMIT) lead_n  = lead_sum;
-    if (since_step_reg != TIMER_MAX) since_step_n  = since_step_reg + 1'b1;
-    if (since_a_reg != TIMER_MAX) since_a_n  = since_a_reg + 1'b1;
+    velocity_n = held_reg ? velocity_reg : v_int;
+    if (lead_sum_abs < LEAD_LIMIT) lead_n = lead_sum;
+    if (since_step_reg != TIMER_MAX) since_step_n = since_step_reg + 1'b1;
+    if (since_a_reg != TIMER_MAX) since_a_n = since_a_reg + 1'b1;
 
     // The serial multiplier: a bit of the multiplier a cycle, MSB first.
     if ((state_reg == S_CROSS1 || state_reg == S_CROSS2 || state_reg == S_FIT_MUL) &&
         !mul_done) begin
-      product_n   = product_step;
-      mul_left_n  = mul_left_reg - 1'b1;
+      product_n = product_step;
+      mul_left_n = mul_left_reg - 1'b1;
       multiplier_n = multiplier_reg << 1;
     end
 
     // The sequencer.
     case (state_reg)
       S_MEAN, S_CONSTANT: if (div_done) begin
-        velocity_n    = v_quotient;
-        accel_n  = {AB{1'b0}};
-        valid_n  = 1'b1;
-        state_n  = S_IDLE;
+        velocity_n = v_quotient;
+        accel_n = {AB{1'b0}};
+        valid_n = 1'b1;
+        state_n = S_IDLE;
       end
       S_CROSS1: if (mul_done) begin
-        cross_n         = product_reg;
-        multiplier_n    = n2_wide << (MB - CB);
-        multiplicand_n  = {{(AB - TB){1'b0}}, p1_reg};
-        mul_left_n      = CB[5:0];
-        product_n       = {PB{1'b0}};
-        state_n         = S_CROSS2;
+        cross_n = product_reg;
+        multiplier_n = n2_wide << (MB - CB);
+        multiplicand_n = {{(AB - TB){1'b0}}, p1_reg};
+        mul_left_n = CB[5:0];
+        product_n = {PB{1'b0}};
+        state_n = S_CROSS2;
       end
       S_CROSS2: if (mul_done) begin
-        last_negative_n  = diff[PB];
-        last_fit_n       = !constant;
+        last_negative_n = diff[PB];
+        last_fit_n = !constant;
         div_start = 1'b1;
         if (constant || !same) begin
-          div_num   = {{(NB - CB - 1 - FRAC){1'b0}}, n_sum, {FRAC{1'b0}}};
-          div_den   = {1'b0, p1_reg} + {1'b0, p2_reg};
-          state_n  = S_CONSTANT;
+          div_num = {{(NB - CB - 1 - FRAC){1'b0}}, n_sum, {FRAC{1'b0}}};
+          div_den = {1'b0, p1_reg} + {1'b0, p2_reg};
+          state_n = S_CONSTANT;
         end else begin
-          div_num   = {{(NB - CB - FRAC){1'b0}}, n1_reg, {FRAC{1'b0}}};
-          div_den   = {1'b0, p1_reg};
-          state_n  = S_FIT_V01;
+          div_num = {{(NB - CB - FRAC){1'b0}}, n1_reg, {FRAC{1'b0}}};
+          div_den = {1'b0, p1_reg};
+          state_n = S_FIT_V01;
         end
       end
       S_FIT_V01: if (div_done) begin
-        v01_n    = quotient;
+        v01_n = quotient;
         div_start = 1'b1;
-        div_num   = {{(NB - CB - FRAC){1'b0}}, n2_reg, {FRAC{1'b0}}};
-        div_den   = {1'b0, p2_reg};
-        state_n  = S_FIT_V12;
+        div_num = {{(NB - CB - FRAC){1'b0}}, n2_reg, {FRAC{1'b0}}};
+        div_den = {1'b0, p2_reg};
+        state_n = S_FIT_V12;
       end
       S_FIT_V12: if (div_done) begin
         div_start = 1'b1;
-        div_num   = {{(NB - QB - 2){1'b0}}, d_abs, 1'b0};
-        div_den   = {1'b0, p1_reg} + {1'b0, p2_reg};
-        negative_n  = negative_reg ^ d[QB];
-        state_n  = S_FIT_A;
+        div_num = {{(NB - QB - 2){1'b0}}, d_abs, 1'b0};
+        div_den = {1'b0, p1_reg} + {1'b0, p2_reg};
+        negative_n = negative_reg ^ d[QB];
+        state_n = S_FIT_A;
       end
       S_FIT_A: if (div_done) begin
-        multiplier_n    = fit_multiplier << (MB - TB - 1);
-        multiplicand_n  = accel_fit;
-        mul_left_n      = TB[5:0] + 6'd1;
-        product_n       = {PB{1'b0}};
-        state_n         = S_FIT_MUL;
+        multiplier_n = fit_multiplier << (MB - TB - 1);
+        multiplicand_n = accel_fit;
+        mul_left_n = TB[5:0] + 6'd1;
+        product_n = {PB{1'b0}};
+        state_n = S_FIT_MUL;
       end
       S_FIT_MUL: if (mul_done) begin
-        velocity_n    = v_fit;
-        accel_n  = multiplicand_reg;
-        valid_n  = 1'b1;
+        velocity_n = v_fit;
+        accel_n = multiplicand_reg;
+        valid_n = 1'b1;
         if (v_fit_wrong) begin  // decelerated through 0: it stops there
-          velocity_n    = {VB{1'b0}};
-          accel_n  = {AB{1'b0}};
+          velocity_n = {VB{1'b0}};
+          accel_n = {AB{1'b0}};
         end
-        state_n  = S_IDLE;
+        state_n = S_IDLE;
       end
       S_DECAY: if (div_done) begin
-        accel_n  = negative_reg ? {1'b0, quotient} : -{1'b0, quotient};
-        state_n  = S_IDLE;
+        accel_n = negative_reg ? {1'b0, quotient} : -{1'b0, quotient};
+        state_n = S_IDLE;
       end
       default: begin
       end
@@ -352,100 +367,118 @@ module prenc_velocity #(
     // A stop: integrating reached 0, or no step for 2^TIMER_BITS - 1 clocks.
     if (stop || timeout) begin
       velocity_n = {VB{1'b0}};
-      accel_n       = {AB{1'b0}};
-      valid_n       = 1'b1;
-      decaying_n    = 1'b0;
-      have_prev_n   = 1'b0;
-      last_fit_n    = 1'b0;
-      step_speed_n  = {(VB - 1){1'b0}};
+      accel_n = {AB{1'b0}};
+      valid_n = 1'b1;
+      decaying_n = 1'b0;
+      have_prev_n = 1'b0;
+      last_fit_n = 1'b0;
+      step_speed_n = {(VB - 1){1'b0}};
+      held_n = 1'b0;
       div_cancel = 1'b1;
       div_start = 1'b0;
-      state_n  = S_IDLE;
+      state_n = S_IDLE;
+    end else if (hold) begin
+      velocity_n = {VB{1'b0}};
+      held_n = 1'b1;
+      zero_at_n = since_step_reg;
+      div_cancel = 1'b1;
+      div_start = 1'b0;
+      state_n = S_IDLE;
     end else if (idle && !decaying_reg && !step && !illegal && !v_zero && lead_abs >= OVERDUE) begin
       // Overdue: decay to 0 over a third of the time since the step.
-      negative_n  = velocity_reg[VB-1];
+      negative_n = velocity_reg[VB-1];
       div_start = 1'b1;
-      div_num   = {{(NB - VB - 1){1'b0}}, {1'b0, v_abs, 1'b0} + {2'b00, v_abs}};
-      div_den   = {1'b0, since_step_reg};
-      state_n     = S_DECAY;
-      decaying_n  = 1'b1;
+      div_num = {{(NB - VB - 1){1'b0}}, {1'b0, v_abs, 1'b0} + {2'b00, v_abs}};
+      div_den = {1'b0, since_step_reg};
+      state_n = S_DECAY;
+      decaying_n = 1'b1;
     end
 
     // Events, which win over all the above.
     speed = velocity_n[VB-1] ? -velocity_n[VB-2:0] : velocity_n[VB-2:0];
     if (illegal) begin
       velocity_n = {VB{1'b0}};
-      accel_n       = {AB{1'b0}};
-      valid_n       = 1'b0;
-      decaying_n    = 1'b0;
-      have_a_n      = 1'b0;
-      have_prev_n   = 1'b0;
-      last_fit_n    = 1'b0;
-      moved_n       = 1'b0;
-      since_step_n  = {{(TB - 1){1'b0}}, 1'b1};
-      lead_n        = {LB{1'b0}};
+      accel_n = {AB{1'b0}};
+      valid_n = 1'b0;
+      decaying_n = 1'b0;
+      held_n = 1'b0;
+      have_a_n = 1'b0;
+      have_prev_n = 1'b0;
+      last_fit_n = 1'b0;
+      moved_n = 1'b0;
+      since_step_n = {{(TB - 1){1'b0}}, 1'b1};
+      lead_n = {LB{1'b0}};
       div_cancel = 1'b1;
       div_start = 1'b0;
-      state_n  = S_IDLE;
+      state_n = S_IDLE;
     end else if (step) begin
-      count_n       = step_cw ? count_reg + 1'b1 : count_reg - 1'b1;
-      cw_n          = step_cw;
-      moved_n       = 1'b1;
-      since_step_n  = {{(TB - 1){1'b0}}, 1'b1};
-      lead_n        = {LB{1'b0}};
-      if (decaying_reg) begin
-        decaying_n  = 1'b0;
-        accel_n     = {AB{1'b0}};
-        if (state_reg == S_DECAY) begin
+      count_n = step_cw ? count_reg + 1'b1 : count_reg - 1'b1;
+      cw_n = step_cw;
+      moved_n = 1'b1;
+      since_step_n = {{(TB - 1){1'b0}}, 1'b1};
+      lead_n = {LB{1'b0}};
+      // (_n: what this cycle has decided so far, as the model reads it)
+      if (held_n && !reversal) begin  // it did not reverse: the acceleration was wrong
+        accel_n = {AB{1'b0}};
+        have_prev_n = 1'b0;
+        last_fit_n = 1'b0;
+      end
+      held_n = 1'b0;
+      if (decaying_n) begin
+        decaying_n = 1'b0;
+        accel_n = {AB{1'b0}};
+        if (state_n == S_DECAY) begin
           div_cancel = 1'b1;
           div_start = 1'b0;
-          state_n  = S_IDLE;
+          state_n = S_IDLE;
         end
       end
       if (reversal) begin
         speed = step_speed_reg;
         velocity_n = step_cw ? {1'b0, step_speed_reg} : -{1'b0, step_speed_reg};
-        have_prev_n  = 1'b0;
-        last_fit_n   = 1'b0;
-        have_a_n     = 1'b1;
-        x_a_n        = x;
-        since_a_n    = {{(TB - 1){1'b0}}, 1'b1};
+        have_prev_n = 1'b0;
+        last_negative_n = !last_negative_reg;  // accel goes on; the speed's trend turns
+        have_a_n = 1'b1;
+        x_a_n = x;
+        since_a_n = {{(TB - 1){1'b0}}, 1'b1};
         div_cancel = 1'b1;
         div_start = 1'b0;
-        state_n  = S_IDLE;
+        state_n = S_IDLE;
       end else if (!have_a_reg || since_a_reg == TIMER_MAX) begin
-        have_prev_n  = 1'b0;
-        last_fit_n   = 1'b0;
-        have_a_n     = 1'b1;
-        x_a_n        = x;
-        since_a_n    = {{(TB - 1){1'b0}}, 1'b1};
+        have_prev_n = 1'b0;
+        last_fit_n = 1'b0;
+        have_a_n = 1'b1;
+        x_a_n = x;
+        since_a_n = {{(TB - 1){1'b0}}, 1'b1};
       end else if (idle) begin
-        negative_n  = !step_cw;
-        if (closes && have_prev_reg) begin
-          n1_n            = n;
-          p1_n            = since_a_reg;
-          n2_n            = prev_n_reg;
-          p2_n            = prev_clocks_reg;
-          multiplier_n    = n_wide << (MB - CB);
-          multiplicand_n  = {{(AB - TB){1'b0}}, prev_clocks_reg};
-          mul_left_n      = CB[5:0];
-          product_n       = {PB{1'b0}};
-          state_n         = S_CROSS1;
-        end else if (closes || !have_prev_reg) begin
+        negative_n = !step_cw;
+        if (closes && have_prev_n) begin  // _n: a hold let go just now clears it
+          n1_n = n;
+          p1_n = since_a_reg;
+          n2_n = prev_n_reg;
+          p2_n = prev_clocks_reg;
+          multiplier_n = n_wide << (MB - CB);
+          multiplicand_n = {{(AB - TB){1'b0}}, prev_clocks_reg};
+          mul_left_n = CB[5:0];
+          product_n = {PB{1'b0}};
+          state_n = S_CROSS1;
+        end else if ((closes || !have_prev_n) && accel_n == {AB{1'b0}}) begin
+          // The mean since A, unless an acceleration is known (after a reversal): then
+          // the velocity integrates it until a fit.
           div_start = 1'b1;
-          div_num   = {{(NB - CB - FRAC){1'b0}}, n, {FRAC{1'b0}}};
-          div_den   = {1'b0, since_a_reg};
-          state_n  = S_MEAN;
+          div_num = {{(NB - CB - FRAC){1'b0}}, n, {FRAC{1'b0}}};
+          div_den = {1'b0, since_a_reg};
+          state_n = S_MEAN;
         end
         if (closes) begin
-          have_prev_n    = 1'b1;
-          prev_n_n       = n;
-          prev_clocks_n  = since_a_reg;
-          x_a_n          = x;
-          since_a_n      = {{(TB - 1){1'b0}}, 1'b1};
+          have_prev_n = 1'b1;
+          prev_n_n = n;
+          prev_clocks_n = since_a_reg;
+          x_a_n = x;
+          since_a_n = {{(TB - 1){1'b0}}, 1'b1};
         end
       end
-      step_speed_n  = speed;
+      step_speed_n = speed;
     end
 
   end
@@ -459,6 +492,8 @@ module prenc_velocity #(
       cw_reg <= 1'b1;
       moved_reg <= 1'b0;
       step_speed_reg <= {(VB - 1){1'b0}};
+      held_reg <= 1'b0;
+      zero_at_reg <= {TB{1'b0}};
       since_step_reg <= {TB{1'b0}};
       lead_reg <= {LB{1'b0}};
       have_a_reg <= 1'b0;
@@ -490,6 +525,8 @@ module prenc_velocity #(
       cw_reg <= cw_n;
       moved_reg <= moved_n;
       step_speed_reg <= step_speed_n;
+      held_reg <= held_n;
+      zero_at_reg <= zero_at_n;
       since_step_reg <= since_step_n;
       lead_reg <= lead_n;
       have_a_reg <= have_a_n;

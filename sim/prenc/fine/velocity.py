@@ -28,17 +28,21 @@ The estimator, on the quadrature decoder's registered step:
   FULL_CLOCKS being how long the computation takes, so that the velocity is that of
   the cycle it is loaded in. Otherwise the mean over both windows, accel 0. Between
   updates the velocity integrates `accel`.
-- Before the first window closes (after reset, a stop, a reversal or an illegal
-  transition): on each step, the mean velocity since A, accel 0.
-- A reversal (a step against the last step's direction) restarts the windows, and the
+- Before the first window closes (after reset, a stop or an illegal transition): on
+  each step, the mean velocity since A, accel 0.
+- A reversal (a step against the last step's direction) restarts the windows; the
   velocity takes the new direction's sign at once, with the speed the last edge was
-  crossed at: in a smooth reversal the disc crosses the same edge back at that speed.
-  Without a step the velocity never crosses 0 (integrating a deceleration): it
-  stops there, and reads 0.
+  crossed at (in a smooth reversal the disc crosses the same edge back at that speed),
+  and the acceleration goes on: no means are taken while it is known, until a fit.
+- Without a step the velocity never crosses 0. Integrating the acceleration to 0 holds
+  it there, acceleration kept, for the reversal that should follow; a step the same
+  way instead means the acceleration was wrong (it is dropped, the means restart);
+  no step for 4 times as long as it took to reach 0 is a stop.
 - Overdue: once the velocity predicts 1.5 quarters of travel since the last step and
   no step came, the disc is slower than estimated: accel becomes -3 v / E (E the
   clocks since the step), which brings the velocity to 0 at 2 predicted quarter
-  periods, and then it reads 0 (a stop). No step for 2^TIMER_BITS - 1 clocks: 0 too.
+  periods, and that is a stop. No step for 2^TIMER_BITS - 1 clocks: a stop too. A
+  stop reads 0 (valid).
 - An illegal transition (a missed state) drops the velocity: `valid` 0 until the next
   estimate.
 
@@ -128,6 +132,8 @@ class Velocity:
         self.count = 0          # edge count in quarters, modulo 2^COUNT_BITS
         self.cw = 1             # direction of the last step
         self.step_speed = 0     # |velocity| when the last step came
+        self.held = 0           # the integration reached 0: held there, accel kept
+        self.zero_at = 0        # clocks from the last step to that zero
         self.moved = 0          # a step since reset, a stop or an illegal transition
         self.since_step = 0     # clocks since the last step (saturating)
         self.lead = 0           # predicted travel since the last step, FRAC bits
@@ -151,7 +157,7 @@ class Velocity:
         self.multiplicand = 0
         self.product = 0
         self.decaying = 0
-        self.last_diff = 0      # n1 P2 - n2 P1 of the last update, and whether it failed
+        self.last_negative = 0  # n1 P2 - n2 P1 < 0 on the last update, and whether it failed
         self.last_fit = 0       # the constant-speed test
         self.div = Divider()
 
@@ -170,10 +176,15 @@ class Velocity:
         velocity = self.velocity
         mul_done = self.mul_left == 0
 
-        # Between events: the velocity integrates accel; the timers run.
-        v_n = saturate(velocity + self.accel, VELOCITY_BITS)
-        # Without a step the velocity never crosses 0: it stops there.
-        stop = velocity != 0 and (v_n == 0 or (v_n < 0) != (velocity < 0))
+        # Between events: the velocity integrates accel (but while held at 0); the timers run.
+        v_n = velocity if self.held else saturate(velocity + self.accel, VELOCITY_BITS)
+        # Without a step the velocity never crosses 0: decaying, it stops there; else it
+        # is held at 0 with its acceleration, for the reversal that should come. Held for
+        # 4 times as long as it took to get there, the disc has stopped.
+        crossing = velocity != 0 and (v_n == 0 or (v_n < 0) != (velocity < 0))
+        stop = crossing and self.decaying
+        hold = crossing and not self.decaying
+        stop |= self.held and self.since_step >= 4 * self.zero_at
         lead = self.lead + velocity
         lead_n = lead if abs(lead) < LEAD_LIMIT else self.lead
         since_step_n = min(self.since_step + 1, self.timer_max)
@@ -197,8 +208,8 @@ class Velocity:
         elif state == self.CROSS2 and mul_done:
             diff = self.cross - self.product
             constant = abs(diff) < self.n1 + self.n2
-            same = (diff < 0) == (self.last_diff < 0) and self.last_fit
-            self.last_diff, self.last_fit = diff, int(not constant)
+            same = int(diff < 0) == self.last_negative and self.last_fit
+            self.last_negative, self.last_fit = int(diff < 0), int(not constant)
             if constant or not same:
                 start, num, den = 1, (self.n1 + self.n2) << FRAC, self.p1 + self.p2
                 self.state = self.CONSTANT
@@ -234,8 +245,11 @@ class Velocity:
 
         # A stop: the decay reached 0, or no step for 2^TIMER_BITS - 1 clocks.
         if stop or timeout:
-            v_n, self.accel, self.valid, self.decaying = 0, 0, 1, 0
+            v_n, self.accel, self.valid, self.decaying, self.held = 0, 0, 1, 0, 0
             self.have_prev = self.last_fit = self.step_speed = 0
+            cancel, start, self.state = 1, 0, self.IDLE
+        elif hold:
+            v_n, self.held, self.zero_at = 0, 1, self.since_step
             cancel, start, self.state = 1, 0, self.IDLE
         elif idle and not self.decaying and not step and not illegal and velocity != 0 \
                 and abs(self.lead) >= OVERDUE:
@@ -246,7 +260,7 @@ class Velocity:
 
         # Events, which win over all the above.
         if illegal:
-            v_n, self.accel, self.valid, self.decaying = 0, 0, 0, 0
+            v_n, self.accel, self.valid, self.decaying, self.held = 0, 0, 0, 0, 0
             self.have_a = self.have_prev = self.last_fit = self.moved = 0
             since_step_n, lead_n = 1, 0
             cancel, start, self.state = 1, 0, self.IDLE
@@ -256,6 +270,9 @@ class Velocity:
             reversal = self.moved and step_cw != self.cw
             self.cw, self.moved = step_cw, 1
             since_step_n, lead_n = 1, 0
+            if self.held and not reversal:   # it did not reverse: the acceleration was wrong
+                self.accel, self.have_prev, self.last_fit = 0, 0, 0
+            self.held = 0
             if self.decaying:
                 self.decaying, self.accel = 0, 0
                 if self.state == self.DECAY:
@@ -263,9 +280,12 @@ class Velocity:
             n = abs(((x - self.x_a + (1 << (COUNT_BITS - 1))) & mask) - (1 << (COUNT_BITS - 1)))
             speed = abs(v_n)
             if reversal:
+                # The same edge crossed back at the speed it was crossed at; accel and the
+                # sign memory go on (the speed's trend turns: it grows again).
                 speed = self.step_speed
                 v_n = speed if step_cw else -speed
-                self.have_prev = self.last_fit = 0
+                self.have_prev = 0
+                self.last_negative ^= 1
                 self.have_a, self.x_a, since_a_n = 1, x, 1
                 cancel, start, self.state = 1, 0, self.IDLE
             elif not self.have_a or self.since_a == self.timer_max:
@@ -277,7 +297,9 @@ class Velocity:
                 if closes and self.have_prev:
                     self.n1, self.p1, self.n2, self.p2 = n, self.since_a, self.prev_n, self.prev_clocks
                     self._multiply(n, self.prev_clocks, COUNT_BITS, self.CROSS1)
-                elif closes or not self.have_prev:
+                elif (closes or not self.have_prev) and self.accel == 0:
+                    # The mean since A, unless an acceleration is known (after a reversal):
+                    # then the velocity integrates it until a fit.
                     start, num, den = 1, n << FRAC, self.since_a
                     self.state = self.MEAN
                 if closes:

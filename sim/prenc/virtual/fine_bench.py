@@ -208,3 +208,103 @@ def position_error(quarters: np.ndarray, theta: np.ndarray, n: int = N) -> np.nd
 
 def stats(err: np.ndarray) -> tuple[float, float]:
     return float(np.sqrt(np.mean(err * err))), float(np.max(np.abs(err)))
+
+
+# -- the scenarios of issue 37 ------------------------------------------------------
+
+STEADY_RPM = (1, 10, 100, 600, 1000, 6000, 10000)
+RAMP_SETTLE_S = 250e-6     # the ramp's rows without the first 250 us after each change of
+                           # acceleration (two windows at 600 rpm): what no causal
+                           # estimator can know yet
+
+
+@dataclass
+class Case:
+    """A scenario: the angle at every clock and the clocks it is measured over."""
+
+    name: str
+    theta: np.ndarray
+    measure: np.ndarray            # clock indices c (the output after clock c, against theta[c + 1])
+    speed_norm: float | None = None  # velocity errors in % of this speed (quarters per clock);
+                                     # None: of the true speed at each clock
+    stop_clock: int | None = None    # the stop scenario: where the disc stops
+
+
+def _traj(start: float = 100.375) -> Trajectory:
+    return Trajectory(CLK_HZ, start=start)
+
+
+def cases() -> list[Case]:
+    """Every scenario of `make bench`'s section 9 (N = 10, 30 MHz)."""
+    out: list[Case] = []
+    for r in STEADY_RPM:
+        v = rpm(r)
+        warm = max(6.0, 6 * v * WINDOW / CLK_HZ)         # slots: three windows and more
+        measured = max(1.0 if r == 1 else 2.0, v * 30_000 / CLK_HZ)
+        theta = _traj().constant(v, (warm + measured) / v).theta
+        start = int(warm / v * CLK_HZ)
+        out.append(Case(f"{r} rpm", theta, np.arange(start, len(theta) - 1)))
+    for r in (600, 6000):
+        traj = _traj().constant(rpm(r), 2e-3)
+        start = len(traj.theta)
+        theta = traj.constant(rpm(r), 20e-3, ripple=0.02, ripple_hz=100.0).theta
+        out.append(Case(f"{r} rpm, +-2 % ripple at 100 Hz", theta, np.arange(start, len(theta) - 1)))
+    traj = _traj().constant(rpm(600), 2e-3)
+    t0 = len(traj.theta)
+    traj.accelerate(rpm(6000), 4e-3)
+    t1 = len(traj.theta)
+    theta = traj.constant(rpm(6000), 1e-3).theta
+    settle = int(RAMP_SETTLE_S * CLK_HZ)
+    out.append(Case("ramp 600 -> 6000 rpm in 4 ms", theta, np.arange(t0, t1)))
+    out.append(Case("  the same, settled", theta, np.concatenate([np.arange(t0 + settle, t1),
+                                                                   np.arange(t1 + settle, len(theta) - 1)])))
+    traj = _traj().constant(rpm(600), 2e-3)
+    t0 = len(traj.theta)
+    theta = traj.accelerate(-rpm(600), 2e-3).constant(-rpm(600), 1e-3).theta
+    out.append(Case("reversal 600 -> -600 rpm in 2 ms", theta, np.arange(t0, len(theta) - 1),
+                    speed_norm=4 * rpm(600) / CLK_HZ))
+    traj = _traj().constant(rpm(600), 2e-3)
+    t0 = len(traj.theta)
+    traj.accelerate(0.0, 1e-3)
+    stop = len(traj.theta)
+    theta = traj.rest(3e-3).theta
+    out.append(Case("stop from 600 rpm in 1 ms", theta, np.arange(t0, len(theta) - 1),
+                    speed_norm=4 * rpm(600) / CLK_HZ, stop_clock=stop + DECODER_DELAY))
+    return out
+
+
+@dataclass
+class Row:
+    """One estimator's errors in one case: position in slots, velocity in per cent."""
+
+    fine: tuple[float, float]
+    velocity: tuple[float, float]
+    zero_after: float | None = None   # the stop: edge periods from the stop to a 0 reading
+
+
+def score(case: Case, sync: Sync, fine_quarters: np.ndarray, velocity: np.ndarray) -> Row:
+    c = case.measure
+    err = position_error(fine_quarters[c], case.theta[c + 1])
+    truth = 4 * (case.theta[c + 1] - case.theta[c])
+    norm = np.abs(truth) if case.speed_norm is None else case.speed_norm
+    v_err = (velocity[c] - truth) / norm * 100
+    zero_after = None
+    if case.stop_clock is not None:
+        edges = np.flatnonzero(sync.step)
+        period = edges[-1] - edges[-2]
+        zeros = np.flatnonzero(velocity[case.stop_clock:] == 0)
+        zero_after = float(zeros[0] / period) if len(zeros) else math.inf
+    return Row(stats(err), stats(v_err), zero_after)
+
+
+def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
+    """The coarse position, ours and the three baselines in one case."""
+    sync = sync_stream(case.theta, printing)
+    ours = run_fine(sync)
+    scale = 1 << FINE_BITS
+    rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
+            "ours": score(case, sync, ours["fine"] / scale, ours["velocity"])}
+    for name, velocity in (("period", period_velocity(sync)), ("mixed", sampled_velocity(sync, True)),
+                           ("count", sampled_velocity(sync, False))):
+        rows[name] = score(case, sync, interpolate(sync, velocity) / scale, velocity)
+    return rows
