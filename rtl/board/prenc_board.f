@@ -2,6 +2,7 @@
 // Sources of prenc_board (verilator -F <this file>), relative to this folder;
 // a line `-F <list>` includes another top's list, relative to its own folder.
 -F ../core/prenc_core.f
+-F ../fine/prenc_fine.f
 -F prenc_host_link.f
 prenc_ssi.v
 prenc_turns.v

@@ -2,9 +2,18 @@
 // prenc_board: the reader as it goes on a board, without the board's clock and pins.
 //
 //   encoder pins -> prenc_core -> prenc_host_link (UART to the PC, docs/host-protocol.md)
-//                             -> prenc_ssi       (SSI to a motion controller)
-//                             -> prenc_turns -> prenc_biss (BiSS-C to a servo drive)
+//                             -> prenc_fine (fine position, velocity; docs/fine.md)
+//                                -> prenc_turns -> prenc_ssi  (SSI to a motion controller)
+//                                               -> prenc_biss (BiSS-C to a servo drive)
 //                             -> mode LEDs
+//
+// SSI and BiSS-C send the fine position, N + 2 + FINE_BITS bits, extrapolated to the
+// master's first falling clock edge (EXTRAPOLATE = 1). The pins reach the fine output
+// in 2 + FILTER + 1 + 4 + 3 clocks, half a clock after the edge on average. The frame
+// latches the fine output of the clock that first samples the master's edge (its
+// synchronizer and prenc_turns' register take the two clocks to the latch), half a
+// clock after that edge on average: LOOKAHEAD_HALVES = 2 (10 + FILTER). Both take the
+// fine position from prenc_turns' register, so turns and position are always one pair.
 //
 // The board tops in constraints/<board>/ add the PLL, the power-on reset and the
 // pin names; this module is what the tests simulate (tb/prenc_board).
@@ -19,6 +28,11 @@
 //   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
 //                 period of the slowest MA). MA up to CLK_HZ / 5 (docs/biss-c.md)
+//   FINE_BITS     fraction bits of the quarter in SSI's and BiSS-C's position, 0..8
+//                 (default 0: the quarter, as pos_hyb)
+//   EXTRAPOLATE   1: SSI's and BiSS-C's position is extrapolated by the velocity to the
+//                 master's request (default); 0: the position as the pipeline has it
+//   VELOCITY_WINDOW   prenc_velocity's WINDOW, the shortest window in clocks (2048)
 //   LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
 //   SCORE_LIMIT, CONV_REG   the core's decision and build options, passed to it as
 //                 they are (prenc_core's header: ranges and defaults; checked there)
@@ -50,6 +64,9 @@ module prenc_board #(
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_HYBRID     = 1,
   parameter integer BISS_TIMEOUT_US = 20,
+  parameter integer FINE_BITS       = 0,
+  parameter integer EXTRAPOLATE     = 1,
+  parameter integer VELOCITY_WINDOW = 2048,
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
   parameter integer LOCK_ONE        = (N < 8) ? N + 5 : N + 2,
   parameter integer LOCK_EXTRA      = 3,
@@ -105,6 +122,10 @@ module prenc_board #(
       initial $display("ERROR: %m: parameter BISS_HYBRID = %0d must be 0 or 1", BISS_HYBRID);
       prenc_board_parameter_BISS_HYBRID_must_be_0_or_1 u_stop ();
     end
+    if (EXTRAPOLATE < 0 || EXTRAPOLATE > 1) begin : g_bad_extrapolate
+      initial $display("ERROR: %m: parameter EXTRAPOLATE = %0d must be 0 or 1", EXTRAPOLATE);
+      prenc_board_parameter_EXTRAPOLATE_must_be_0_or_1 u_stop ();
+    end
     if (BISS_TIMEOUT_US < 1 || BISS_TIMEOUT_US > 1000) begin : g_bad_biss_timeout
       initial $display("ERROR: %m: parameter BISS_TIMEOUT_US = %0d is out of range 1..1000",
                        BISS_TIMEOUT_US);
@@ -126,7 +147,7 @@ module prenc_board #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
-  wire          sync_step;     // for prenc_fine (issue 37), not yet on this board
+  wire          sync_step;
   wire          sync_illegal;
   wire          clear_errors;
 
@@ -203,15 +224,76 @@ module prenc_board #(
     .snapshot      (snapshot)
   );
 
-  localparam integer SSI_WIDTH = (SSI_HYBRID == 1) ? N + 2 : N;
+  // Fine position and velocity (FINE_BITS and VELOCITY_WINDOW are checked there).
+  localparam integer F         = FINE_BITS;
+  localparam integer POS_BITS  = N + 2 + F;
+  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1) ? 2 * (10 + FILTER) : 0;
+  wire [POS_BITS-1:0] fine_pos;
+  wire                fine_valid;
+  wire                interpolated;
+  wire [50:0]         velocity;
+  wire [49:0]         accel;
+  wire                velocity_valid;
+
+  prenc_fine #(
+    .N                (N),
+    .FINE_BITS        (F),
+    .LOOKAHEAD_HALVES (LOOKAHEAD),
+    .WINDOW           (VELOCITY_WINDOW)
+  ) u_fine (
+    .clk            (clk),
+    .rst            (rst),
+    .pos_hyb        (pos_hyb),
+    .pos_valid      (valid),
+    .step           (sync_step),
+    .step_cw        (direction),
+    .illegal        (sync_illegal),
+    .fine_pos       (fine_pos),
+    .fine_valid     (fine_valid),
+    .interpolated   (interpolated),
+    .velocity       (velocity),
+    .accel          (accel),
+    .velocity_valid (velocity_valid)
+  );
+
+  // Multi-turn from the fine position and the incremental count (in the fine units);
+  // `turns_full` is {turns, fine position} of the clock before, always one pair.
+  localparam integer BISS_TURN_BITS = (BISS_MT_BITS > 0) ? BISS_MT_BITS : 1;
+  wire [BISS_TURN_BITS-1:0]          turns;
+  wire                               turns_placed;
+  wire [BISS_TURN_BITS+POS_BITS-1:0] turns_full;
+  wire [POS_BITS-1:0]                count_fine = {incremental[N+1:0], {F{1'b0}}};
+
+  prenc_turns #(
+    .POS_BITS   (POS_BITS),
+    .TURN_BITS  (BISS_TURN_BITS)
+  ) u_turns (
+    .clk      (clk),
+    .rst      (rst),
+    .position (fine_pos),
+    .valid    (fine_valid),
+    .count    (count_fine),
+    .turns    (turns),
+    .full     (turns_full),
+    .placed   (turns_placed)
+  );
+
+  // The position SSI and BiSS-C send: the fine one (HYBRID = 1) or its slot (0).
+  reg fine_valid_d;  // fine_valid of the clock before, with turns_full
+  always @(posedge clk) fine_valid_d <= rst ? 1'b0 : fine_valid;
+  wire [POS_BITS-1:0] fine_held = turns_full[POS_BITS-1:0];
+  wire [N-1:0]        slot_held = fine_held[POS_BITS-1:F+2];
+  wire [BISS_TURN_BITS-1:0] turns_held = turns_full[BISS_TURN_BITS+POS_BITS-1:POS_BITS];
+
+  localparam integer SSI_WIDTH = (SSI_HYBRID == 1) ? POS_BITS : N;
   wire [SSI_WIDTH-1:0] ssi_position;
   wire                 ssi_busy;
 
   generate
     if (SSI_HYBRID == 1) begin : g_ssi_hybrid
-      assign ssi_position = pos_hyb;
+      assign ssi_position = fine_held;
     end else begin : g_ssi_abs
-      assign ssi_position = pos_abs;
+      assign ssi_position = slot_held;
     end
   endgenerate
 
@@ -223,47 +305,29 @@ module prenc_board #(
     .clk      (clk),
     .rst      (rst),
     .position (ssi_position),
-    .valid    (valid),
+    .valid    (fine_valid_d),
     .gray     (ssi_gray),
     .ssi_clk  (ssi_clk),
     .ssi_data (ssi_data),
     .busy     (ssi_busy)
   );
 
-  // BiSS-C: multi-turn from the single-turn position and the incremental count.
-  localparam integer BISS_TURN_BITS = (BISS_MT_BITS > 0) ? BISS_MT_BITS : 1;
-  localparam integer BISS_ST_BITS   = (BISS_HYBRID == 1) ? N + 2 : N;
+  // BiSS-C: multi-turn and single-turn.
+  localparam integer BISS_ST_BITS   = (BISS_HYBRID == 1) ? POS_BITS : N;
   localparam integer BISS_BITS      = BISS_MT_BITS + BISS_ST_BITS;
-  wire [BISS_TURN_BITS-1:0] turns;
   wire [BISS_BITS-1:0]      biss_data;
   wire                      biss_busy;
   wire                      biss_latch;
-  wire                      turns_placed;
-  wire [BISS_TURN_BITS+N+1:0] turns_full;
-
-  prenc_turns #(
-    .POS_BITS   (N + 2),
-    .TURN_BITS  (BISS_TURN_BITS)
-  ) u_turns (
-    .clk      (clk),
-    .rst      (rst),
-    .position (pos_hyb),
-    .valid    (valid),
-    .count    (incremental[N+1:0]),
-    .turns    (turns),
-    .full     (turns_full),
-    .placed   (turns_placed)
-  );
 
   generate
     if (BISS_MT_BITS > 0 && BISS_HYBRID == 1) begin : g_biss_mt_hyb
-      assign biss_data = {turns, pos_hyb};
+      assign biss_data = {turns_held, fine_held};
     end else if (BISS_MT_BITS > 0) begin : g_biss_mt_abs
-      assign biss_data = {turns, pos_abs};
+      assign biss_data = {turns_held, slot_held};
     end else if (BISS_HYBRID == 1) begin : g_biss_st_hyb
-      assign biss_data = pos_hyb;
+      assign biss_data = fine_held;
     end else begin : g_biss_st_abs
-      assign biss_data = pos_abs;
+      assign biss_data = slot_held;
     end
   endgenerate
 
@@ -274,7 +338,7 @@ module prenc_board #(
     .clk     (clk),
     .rst     (rst),
     .data    (biss_data),
-    .error_n (valid),
+    .error_n (fine_valid_d),
     .warn_n  (~((mode_now == 3'd2) | (mode_now == 3'd3))),
     .ma      (biss_ma),
     .slo     (biss_slo),
@@ -291,7 +355,8 @@ module prenc_board #(
   assign mode            = mode_now;
 
   wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy, biss_busy, biss_latch,
-                     turns_placed, turns, turns_full, sync_step, sync_illegal};
+                     turns_placed, turns, slot_held, fine_held, interpolated, velocity, accel,
+                     velocity_valid};
 
 endmodule
 

@@ -2,13 +2,14 @@
 // prenc_divider: floor(num / den), one quotient bit per clock (restoring division).
 //
 // A `start` in cycle k loads num and den; `done` is high for one cycle, cycle
-// k + QUOTIENT_BITS + 1, with the quotient (held until the next start). A quotient
+// k + QUOTIENT_BITS + 2, with the quotient (held until the next start). A quotient
 // that needs more than QUOTIENT_BITS bits, or den = 0, saturates to all ones.
 // `cancel` drops a division under way (a `done` due in the same cycle still comes).
 // Model: prenc.fine.velocity.Divider.
 //
-// The remainder starts as num's bits above the quotient's (below den, else the
-// quotient saturates) and takes one more bit of num a clock.
+// The operands are registered first; the next cycle checks for saturation and starts
+// the remainder as num's bits above the quotient's (below den, else the quotient
+// saturates); then it takes one more bit of num a clock.
 //
 // Parameters
 //   NUM_BITS       numerator width, QUOTIENT_BITS + 1..128
@@ -60,10 +61,11 @@ module prenc_divider #(
   reg [LEFT_BITS-1:0]     left_reg;
   reg                     saturated_reg;
   reg                     done_reg;
+  reg [NUM_BITS-1:0]      num_reg;
+  reg                     loaded_reg;  // operands in, the check and the first bit next
 
   wire [REM_BITS:0]   high     = {{(REM_BITS + 1 - HIGH_BITS){1'b0}},
-                                  num[NUM_BITS-1:QUOTIENT_BITS]};
-  wire [REM_BITS:0]   den_wide = {{(REM_BITS + 1 - DEN_BITS){1'b0}}, den};
+                                  num_reg[NUM_BITS-1:QUOTIENT_BITS]};
   wire [REM_BITS:0]   den_held = {{(REM_BITS + 1 - DEN_BITS){1'b0}}, den_reg};
   wire [REM_BITS:0]   shifted  = {rem_reg, bits_reg[QUOTIENT_BITS-1]};
   wire                fits     = shifted >= den_held;
@@ -81,13 +83,21 @@ module prenc_divider #(
         if (saturated_reg) bits_reg <= {QUOTIENT_BITS{1'b1}};
       end
     end
-    if (cancel) left_reg <= {LEFT_BITS{1'b0}};
-    if (start) begin
+    loaded_reg <= 1'b0;
+    if (loaded_reg) begin
       rem_reg       <= high[REM_BITS-1:0];
-      bits_reg      <= num[QUOTIENT_BITS-1:0];
-      den_reg       <= den;
+      bits_reg      <= num_reg[QUOTIENT_BITS-1:0];
       left_reg      <= QUOTIENT_BITS[LEFT_BITS-1:0];
-      saturated_reg <= (den == {DEN_BITS{1'b0}}) || (high >= den_wide);
+      saturated_reg <= (den_reg == {DEN_BITS{1'b0}}) || (high >= den_held);
+    end
+    if (start) begin
+      num_reg    <= num;
+      den_reg    <= den;
+      loaded_reg <= 1'b1;
+    end
+    if (cancel) begin  // wins over a start in the same cycle
+      left_reg   <= {LEFT_BITS{1'b0}};
+      loaded_reg <= 1'b0;
     end
     if (rst) begin
       left_reg      <= {LEFT_BITS{1'b0}};
@@ -96,6 +106,8 @@ module prenc_divider #(
       bits_reg      <= {QUOTIENT_BITS{1'b0}};
       den_reg       <= {DEN_BITS{1'b0}};
       saturated_reg <= 1'b0;
+      num_reg       <= {NUM_BITS{1'b0}};
+      loaded_reg    <= 1'b0;
     end
   end
 

@@ -16,8 +16,13 @@
 // - Without a valid velocity: the fraction is the quarter's middle, nothing is
 //   extrapolated, and `interpolated` is 0.
 // fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
-// h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter;
-// registered, one cycle after pos_hyb. Model: prenc.fine.fine_position.FinePosition.
+// h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter.
+// Three register stages, so that no two long carry chains follow each other: (A) the
+// fraction clamped (by its bits: it lies in (-2, 3) quarters) with pos_hyb and the
+// flags, (B) plus the extrapolation, (C) the output, OUTPUT_DELAY = 3 clocks after
+// pos_hyb. The extrapolation velocity x LOOKAHEAD_HALVES comes from a registered adder
+// tree of three levels (the velocity of three clocks before).
+// Model: prenc.fine.fine_position.FinePosition.
 //
 // Parameters
 //   N                 code word length, 2..24 (pos_hyb is N + 2 bits)
@@ -77,9 +82,7 @@ module prenc_fine_position #(
   localparam integer XB   = FRAC + 12;  // the fraction with the extrapolation
   localparam integer STEP_DELAY = 3;
 
-  localparam signed [LB-1:0] LEAD_LIMIT = {{(LB - FRAC - 2){1'b0}}, 2'b10, {FRAC{1'b0}}};
   localparam signed [LB:0]   ONE        = {{(LB - FRAC){1'b0}}, 1'b1, {FRAC{1'b0}}};
-  localparam signed [LB:0]   TOP        = ONE - 1'b1;           // just below the next quarter
   localparam signed [XB-1:0] LOOKAHEAD  = {{(XB - 9){1'b0}}, LOOKAHEAD_HALVES[8:0]};
   localparam [W-1:0]         MIDDLE     = (F == 0) ? {W{1'b0}}
                                                    : ({{(W - 1){1'b0}}, 1'b1} << (F - 1));
@@ -88,33 +91,76 @@ module prenc_fine_position #(
   reg [STEP_DELAY-1:0] cw_d_reg;
   reg signed [LB-1:0]  travel_reg;
   reg                  cw_reg;
-  reg [W-1:0]          fine_pos_reg;
+  reg [FRAC-1:0]       frac_a_reg;       // stage A
+  reg [N+1:0]          pos_a_reg;
+  reg                  valid_a_reg;
+  reg                  vv_a_reg;
+  reg signed [XB-1:0]  sum_b_reg;        // stage B
+  reg [N+1:0]          pos_b_reg;
+  reg                  valid_b_reg;
+  reg                  vv_b_reg;
+  reg [W-1:0]          fine_pos_reg;     // stage C
   reg                  valid_reg;
   reg                  interpolated_reg;
+  reg signed [XB-1:0]  tree1_reg [0:3];  // velocity x LOOKAHEAD_HALVES: 4, 2, 1 partial sums
+  reg signed [XB-1:0]  tree2_reg [0:1];
+  reg signed [XB-1:0]  tree3_reg;
 
-  // The fraction of the quarter, clamped to it, then extrapolated and truncated.
+  // Stage A: the fraction of the quarter, clamped to it by its bits (edge + travel is
+  // in (-2, 3) quarters: negative, or 1 and above, or in the quarter).
   wire signed [LB:0]   edge_travel = (cw_reg ? {(LB + 1){1'b0}} : ONE) +
                                      {travel_reg[LB-1], travel_reg};
-  wire signed [LB:0]   clamped     = edge_travel[LB] ? {(LB + 1){1'b0}} :
-                                     (edge_travel > TOP) ? TOP : edge_travel;
+  wire                 above       = !edge_travel[LB] &&
+                                     (edge_travel[LB-1:FRAC] != {(LB - FRAC){1'b0}});
+  wire [FRAC-1:0]      clamped     = edge_travel[LB] ? {FRAC{1'b0}} :
+                                     above ? {FRAC{1'b1}} : edge_travel[FRAC-1:0];
+  // The extrapolation's partial products, velocity << i for each bit i of the lookahead.
   wire signed [XB-1:0] v_wide      = {{(XB - 51){velocity[50]}}, velocity};
-  wire signed [XB-1:0] ext_twice   = v_wide * LOOKAHEAD;
-  wire signed [XB-1:0] sum         = {{(XB - LB - 1){1'b0}}, clamped} + (ext_twice >>> 1);
-  wire signed [XB-1:0] truncated   = sum >>> (FRAC - F);
-  wire [W-1:0]         fraction    = velocity_valid ? truncated[W-1:0] : MIDDLE;
-  wire [W-1:0]         base        = {pos_hyb, {F{1'b0}}};
+  wire signed [XB-1:0] partial [0:7];
+  genvar g;
+  generate
+    for (g = 0; g < 8; g = g + 1) begin : g_partial
+      assign partial[g] = LOOKAHEAD[g] ? (v_wide <<< g) : {XB{1'b0}};
+    end
+  endgenerate
+  // Stage B: the fraction plus the extrapolation. Stage C: the output.
+  wire signed [XB-1:0] frac_wide   = {{(XB - FRAC){1'b0}}, frac_a_reg};
+  wire signed [XB-1:0] truncated   = sum_b_reg >>> (FRAC - F);
+  wire [W-1:0]         fraction    = vv_b_reg ? truncated[W-1:0] : MIDDLE;
+  wire [W-1:0]         base        = {pos_b_reg, {F{1'b0}}};
   wire signed [LB-1:0] travel_sum  = travel_reg + {{(LB - 51){velocity[50]}}, velocity};
-  wire [LB-1:0]        travel_abs  = travel_sum[LB-1] ? -travel_sum : travel_sum;
-  wire                 unused_ok   = &{1'b0, truncated[XB-1:W]};  // the quarters above pos_hyb's wrap
+  // |travel_sum| < 2 quarters, by its bits.
+  wire                 travel_in   = (travel_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b0}}) ||
+                                     ((travel_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
+                                      (travel_sum[FRAC:0] != {(FRAC + 1){1'b0}}));
+  // The quarters above pos_hyb's wrap.
+  wire                 unused_ok   = &{1'b0, truncated[XB-1:W]};
 
+  integer k;
   always @(posedge clk) begin
+    // Stage C.
     fine_pos_reg     <= base + fraction;
-    valid_reg        <= pos_valid;
-    interpolated_reg <= pos_valid & velocity_valid;
+    valid_reg        <= valid_b_reg;
+    interpolated_reg <= valid_b_reg & vv_b_reg;
+    // Stage B.
+    sum_b_reg   <= frac_wide + (tree3_reg >>> 1);
+    pos_b_reg   <= pos_a_reg;
+    valid_b_reg <= valid_a_reg;
+    vv_b_reg    <= vv_a_reg;
+    // Stage A.
+    frac_a_reg  <= clamped;
+    pos_a_reg   <= pos_hyb;
+    valid_a_reg <= pos_valid;
+    vv_a_reg    <= velocity_valid;
+    // The tree.
+    for (k = 0; k < 4; k = k + 1) tree1_reg[k] <= partial[2 * k] + partial[2 * k + 1];
+    for (k = 0; k < 2; k = k + 1) tree2_reg[k] <= tree1_reg[2 * k] + tree1_reg[2 * k + 1];
+    tree3_reg <= tree2_reg[0] + tree2_reg[1];
+    // The travel since pos_hyb's last step.
     if (step_d_reg[STEP_DELAY-1]) begin
       travel_reg <= {LB{1'b0}};
       cw_reg     <= cw_d_reg[STEP_DELAY-1];
-    end else if (travel_abs < LEAD_LIMIT) begin
+    end else if (travel_in) begin
       travel_reg <= travel_sum;
     end
     step_d_reg <= {step_d_reg[STEP_DELAY-2:0], step};
@@ -124,9 +170,20 @@ module prenc_fine_position #(
       cw_d_reg         <= {STEP_DELAY{1'b1}};
       travel_reg       <= {LB{1'b0}};
       cw_reg           <= 1'b1;
+      frac_a_reg       <= {FRAC{1'b0}};
+      pos_a_reg        <= {(N + 2){1'b0}};
+      valid_a_reg      <= 1'b0;
+      vv_a_reg         <= 1'b0;
+      sum_b_reg        <= {XB{1'b0}};
+      pos_b_reg        <= {(N + 2){1'b0}};
+      valid_b_reg      <= 1'b0;
+      vv_b_reg         <= 1'b0;
       fine_pos_reg     <= {W{1'b0}};
       valid_reg        <= 1'b0;
       interpolated_reg <= 1'b0;
+      for (k = 0; k < 4; k = k + 1) tree1_reg[k] <= {XB{1'b0}};
+      for (k = 0; k < 2; k = k + 1) tree2_reg[k] <= {XB{1'b0}};
+      tree3_reg <= {XB{1'b0}};
     end
   end
 

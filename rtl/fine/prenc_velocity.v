@@ -80,15 +80,15 @@ module prenc_velocity #(
   localparam integer LB    = FRAC + 4;            // lead (and its sum)
   localparam integer NB    = 66;                  // numerator (65 used)
   localparam integer DB    = TB + 1;              // denominator
-  localparam integer DIV_CLOCKS  = QB + 1;
-  localparam integer FULL_CLOCKS = 2 * CB + 3 * DIV_CLOCKS + TB + 5;
+  localparam integer XB    = CB + TB + 1;         // n1 P2 - n2 P1
+  localparam integer DIV_CLOCKS  = QB + 2;
+  localparam integer FULL_CLOCKS = 2 * CB + 3 * DIV_CLOCKS + TB + 8;
 
-  localparam [3:0] S_IDLE = 4'd0, S_MEAN = 4'd1, S_CROSS1 = 4'd2, S_CROSS2 = 4'd3,
-                   S_CONSTANT = 4'd4, S_FIT_V01 = 4'd5, S_FIT_V12 = 4'd6, S_FIT_A = 4'd7,
-                   S_FIT_MUL = 4'd8, S_DECAY = 4'd9;
+  localparam [3:0] S_IDLE = 4'd0, S_MEAN = 4'd1, S_CROSS1 = 4'd2, S_CROSS2 = 4'd3, S_DECIDE = 4'd4,
+                   S_CONSTANT = 4'd5, S_FIT_V01 = 4'd6, S_FIT_V12 = 4'd7, S_FIT_D = 4'd8,
+                   S_FIT_A = 4'd9, S_FIT_MUL = 4'd10, S_FIT_LOAD = 4'd11, S_DECAY = 4'd12;
 
   localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
-  localparam signed [LB-1:0] LEAD_LIMIT = {{(LB - FRAC - 2){1'b0}}, 2'b10, {FRAC{1'b0}}};
   localparam signed [LB-1:0] OVERDUE    = {{(LB - FRAC - 1){1'b0}}, 2'b11, {(FRAC - 1){1'b0}}};
   localparam [TB-1:0] TIMER_MAX = {TB{1'b1}};
 
@@ -117,7 +117,12 @@ module prenc_velocity #(
   reg [3:0] state_reg;
   reg negative_reg;
   reg [QB-1:0] v01_reg;
-  reg [PB-1:0] cross_reg;
+  reg [XB-2:0] cross_reg;
+  reg signed [XB-1:0] diff_reg;
+  reg [CB:0] n_less_reg;
+  reg [TB:0] p_sum_reg;
+  reg signed [QB:0] d_reg;
+  reg signed [PB:0] v_fit_reg;
   reg [5:0] mul_left_reg;
   reg [MB-1:0] multiplier_reg;
   reg signed [AB-1:0] multiplicand_reg;
@@ -149,7 +154,12 @@ module prenc_velocity #(
   reg [3:0] state_n;
   reg negative_n;
   reg [QB-1:0] v01_n;
-  reg [PB-1:0] cross_n;
+  reg [XB-2:0] cross_n;
+  reg signed [XB-1:0] diff_n;
+  reg [CB:0] n_less_n;
+  reg [TB:0] p_sum_n;
+  reg signed [QB:0] d_n;
+  reg signed [PB:0] v_fit_n;
   reg [5:0] mul_left_n;
   reg [MB-1:0] multiplier_n;
   reg signed [AB-1:0] multiplicand_n;
@@ -184,9 +194,12 @@ module prenc_velocity #(
   // Between events: velocity + accel (saturating), the lead, the timers.
   wire signed [VB+1:0] v_sum = {{2{velocity_reg[VB-1]}}, velocity_reg} +
                                {{(VB + 2 - AB){accel_reg[AB-1]}}, accel_reg};
-  wire signed [VB+1:0] v_top_wide = $signed({2'b00, V_TOP});
-  wire signed [VB-1:0] v_int = (v_sum > v_top_wide) ? V_TOP :
-                               (v_sum < -v_top_wide) ? -V_TOP : v_sum[VB-1:0];
+  // Saturated to +-V_TOP by its bits (no compare: a carry chain less).
+  wire                 v_sum_fits = (v_sum[VB+1:VB-1] == 3'b000) || (v_sum[VB+1:VB-1] == 3'b111);
+  wire                 v_sum_min  = (v_sum[VB+1:VB-1] == 3'b111) &&
+                                  (v_sum[VB-2:0] == {(VB - 1){1'b0}});
+  wire signed [VB-1:0] v_int = (!v_sum_fits || v_sum_min) ? (v_sum[VB+1] ? -V_TOP : V_TOP)
+                                                          : v_sum[VB-1:0];
   wire                 v_zero = (velocity_reg == {VB{1'b0}});
   // Without a step the velocity never crosses 0: decaying, it stops there; else it is
   // held at 0 with its acceleration, for the reversal that should come. Held for 4 times
@@ -197,8 +210,11 @@ module prenc_velocity #(
                                 (held_reg && {2'b00, since_step_reg} >= {zero_at_reg, 2'b00});
   wire                 hold   = crossing && !decaying_reg;
   wire signed [LB-1:0] lead_sum = lead_reg + {{(LB - VB){velocity_reg[VB-1]}}, velocity_reg};
-  wire [LB-1:0]        lead_sum_abs = lead_sum[LB-1] ? -lead_sum : lead_sum;
-  wire [LB-1:0]        lead_abs = lead_reg[LB-1] ? -lead_reg : lead_reg;
+  // |lead_sum| < 2 quarters, by its bits; |lead| >= 1.5 quarters, by two compares.
+  wire                 lead_sum_in = (lead_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b0}}) ||
+                                     ((lead_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
+                                      (lead_sum[FRAC:0] != {(FRAC + 1){1'b0}}));
+  wire                 overdue = (lead_reg >= OVERDUE) || (lead_reg <= -OVERDUE);
   wire                 timeout = (since_step_reg == TIMER_MAX);
   wire                 idle = (state_reg == S_IDLE);
   wire                 mul_done = (mul_left_reg == 6'd0);
@@ -210,21 +226,30 @@ module prenc_velocity #(
                                       (mul_bit ? {{(PB - AB){multiplicand_reg[AB-1]}},
                                                   multiplicand_reg}
                                                : {PB{1'b0}});
-  wire signed [PB:0]   diff = {1'b0, cross_reg} - {product_reg[PB-1], product_reg};
-  wire [PB:0]          diff_abs = diff[PB] ? -diff : diff;
+  // (Both products have CB + TB bits: the difference fits XB.)
+  wire signed [XB-1:0] diff = {1'b0, cross_reg} - {1'b0, product_reg[XB-2:0]};
   wire [CB:0]          n_sum = {1'b0, n1_reg} + {1'b0, n2_reg};
-  wire                 constant = diff_abs < {{(PB - CB){1'b0}}, n_sum};
-  wire                 same = (diff[PB] == last_negative_reg) && last_fit_reg;
+  // |diff| < n1 + n2 by two sums' signs (n_less = n1 + n2 - 1, P1 + P2: registered
+  // while the products run): diff + n_less >= 0 and n_less - diff >= 0.
+  wire [XB-1:0]        n_less_wide = {{(XB - CB - 1){1'b0}}, n_less_reg};
+  wire [XB-1:0]        above_low  = diff_reg + n_less_wide;
+  wire [XB-1:0]        below_high = n_less_wide - diff_reg;
+  wire                 constant = !above_low[XB-1] && !below_high[XB-1];
+  wire                 same = (diff_reg[XB-1] == last_negative_reg) && last_fit_reg;
   // The fit's acceleration difference and the velocity it loads.
   wire signed [QB:0]   d = {1'b0, v01_reg} - {1'b0, quotient};
-  wire [QB:0]          d_abs = d[QB] ? -d : d;
+  wire [QB:0]          d_abs = d_reg[QB] ? -d_reg : d_reg;
   wire signed [AB-1:0] accel_fit = negative_reg ? -{1'b0, quotient} : {1'b0, quotient};
   wire signed [PB:0]   v_fit_sum = (cw_reg ? {{(PB - QB + 1){1'b0}}, v01_reg}
                                            : -{{(PB - QB + 1){1'b0}}, v01_reg}) +
                                    {product_reg[PB-1], product_reg};
-  wire signed [PB:0]   v_fit_top = $signed({{(PB - VB + 1){1'b0}}, V_TOP});
-  wire signed [VB-1:0] v_fit = (v_fit_sum > v_fit_top) ? V_TOP :
-                               (v_fit_sum < -v_fit_top) ? -V_TOP : v_fit_sum[VB-1:0];
+  // Saturated by its bits, as v_int.
+  wire                 v_fit_fits = (v_fit_reg[PB:VB-1] == {(PB - VB + 2){1'b0}}) ||
+                                    (v_fit_reg[PB:VB-1] == {(PB - VB + 2){1'b1}});
+  wire                 v_fit_min  = (v_fit_reg[PB:VB-1] == {(PB - VB + 2){1'b1}}) &&
+                                    (v_fit_reg[VB-2:0] == {(VB - 1){1'b0}});
+  wire signed [VB-1:0] v_fit = (!v_fit_fits || v_fit_min) ? (v_fit_reg[PB] ? -V_TOP : V_TOP)
+                                                          : v_fit_reg[VB-1:0];
   wire                 v_fit_wrong = (v_fit == {VB{1'b0}}) || (v_fit[VB-1] == cw_reg);
   wire signed [VB-1:0] v_quotient = negative_reg ? -{{(VB - QB){1'b0}}, quotient}
                                                  : {{(VB - QB){1'b0}}, quotient};
@@ -269,6 +294,11 @@ module prenc_velocity #(
     negative_n = negative_reg;
     v01_n = v01_reg;
     cross_n = cross_reg;
+    diff_n = diff_reg;
+    n_less_n = n_less_reg;
+    p_sum_n = p_sum_reg;
+    d_n = d_reg;
+    v_fit_n = v_fit_reg;
     mul_left_n = mul_left_reg;
     multiplier_n = multiplier_reg;
     multiplicand_n = multiplicand_reg;
@@ -283,7 +313,7 @@ module prenc_velocity #(
 
     // Between events.
     velocity_n = held_reg ? velocity_reg : v_int;
-    if (lead_sum_abs < LEAD_LIMIT) lead_n = lead_sum;
+    if (lead_sum_in) lead_n = lead_sum;
     if (since_step_reg != TIMER_MAX) since_step_n = since_step_reg + 1'b1;
     if (since_a_reg != TIMER_MAX) since_a_n = since_a_reg + 1'b1;
 
@@ -304,7 +334,9 @@ module prenc_velocity #(
         state_n = S_IDLE;
       end
       S_CROSS1: if (mul_done) begin
-        cross_n = product_reg;
+        cross_n = product_reg[XB-2:0];
+        n_less_n = n_sum - 1'b1;
+        p_sum_n = {1'b0, p1_reg} + {1'b0, p2_reg};
         multiplier_n = n2_wide << (MB - CB);
         multiplicand_n = {{(AB - TB){1'b0}}, p1_reg};
         mul_left_n = CB[5:0];
@@ -312,12 +344,16 @@ module prenc_velocity #(
         state_n = S_CROSS2;
       end
       S_CROSS2: if (mul_done) begin
-        last_negative_n = diff[PB];
+        diff_n = diff;
+        state_n = S_DECIDE;
+      end
+      S_DECIDE: begin
+        last_negative_n = diff_reg[XB-1];
         last_fit_n = !constant;
         div_start = 1'b1;
         if (constant || !same) begin
-          div_num = {{(NB - CB - 1 - FRAC){1'b0}}, n_sum, {FRAC{1'b0}}};
-          div_den = {1'b0, p1_reg} + {1'b0, p2_reg};
+          div_num = {{(NB - CB - 1 - FRAC){1'b0}}, n_less_reg + 1'b1, {FRAC{1'b0}}};
+          div_den = p_sum_reg;
           state_n = S_CONSTANT;
         end else begin
           div_num = {{(NB - CB - FRAC){1'b0}}, n1_reg, {FRAC{1'b0}}};
@@ -333,10 +369,14 @@ module prenc_velocity #(
         state_n = S_FIT_V12;
       end
       S_FIT_V12: if (div_done) begin
+        d_n = d;
+        state_n = S_FIT_D;
+      end
+      S_FIT_D: begin
         div_start = 1'b1;
         div_num = {{(NB - QB - 2){1'b0}}, d_abs, 1'b0};
-        div_den = {1'b0, p1_reg} + {1'b0, p2_reg};
-        negative_n = negative_reg ^ d[QB];
+        div_den = p_sum_reg;
+        negative_n = negative_reg ^ d_reg[QB];
         state_n = S_FIT_A;
       end
       S_FIT_A: if (div_done) begin
@@ -347,6 +387,10 @@ module prenc_velocity #(
         state_n = S_FIT_MUL;
       end
       S_FIT_MUL: if (mul_done) begin
+        v_fit_n = v_fit_sum;
+        state_n = S_FIT_LOAD;
+      end
+      S_FIT_LOAD: begin
         velocity_n = v_fit;
         accel_n = multiplicand_reg;
         valid_n = 1'b1;
@@ -364,7 +408,19 @@ module prenc_velocity #(
       end
     endcase
 
-    // A stop: integrating reached 0, or no step for 2^TIMER_BITS - 1 clocks.
+    // Overdue: decay to 0 over a third of the time since the step. (Evaluated without
+    // waiting for the zero-crossing test: a hold or a stop below overrides it, and the
+    // divider's cancel wins over its start.)
+    if (idle && !decaying_reg && !step && !illegal && !v_zero && overdue) begin
+      negative_n = velocity_reg[VB-1];
+      div_start = 1'b1;
+      div_num = {{(NB - VB - 1){1'b0}}, {1'b0, v_abs, 1'b0} + {2'b00, v_abs}};
+      div_den = {1'b0, since_step_reg};
+      state_n = S_DECAY;
+      decaying_n = 1'b1;
+    end
+    // A hold, or a stop: integrating reached 0 (decaying), or no step for
+    // 2^TIMER_BITS - 1 clocks.
     if (stop || timeout) begin
       velocity_n = {VB{1'b0}};
       accel_n = {AB{1'b0}};
@@ -375,27 +431,18 @@ module prenc_velocity #(
       step_speed_n = {(VB - 1){1'b0}};
       held_n = 1'b0;
       div_cancel = 1'b1;
-      div_start = 1'b0;
       state_n = S_IDLE;
     end else if (hold) begin
       velocity_n = {VB{1'b0}};
       held_n = 1'b1;
       zero_at_n = since_step_reg;
+      decaying_n = 1'b0;
       div_cancel = 1'b1;
-      div_start = 1'b0;
       state_n = S_IDLE;
-    end else if (idle && !decaying_reg && !step && !illegal && !v_zero && lead_abs >= OVERDUE) begin
-      // Overdue: decay to 0 over a third of the time since the step.
-      negative_n = velocity_reg[VB-1];
-      div_start = 1'b1;
-      div_num = {{(NB - VB - 1){1'b0}}, {1'b0, v_abs, 1'b0} + {2'b00, v_abs}};
-      div_den = {1'b0, since_step_reg};
-      state_n = S_DECAY;
-      decaying_n = 1'b1;
     end
 
     // Events, which win over all the above.
-    speed = velocity_n[VB-1] ? -velocity_n[VB-2:0] : velocity_n[VB-2:0];
+    speed = v_abs;  // |velocity| as the cycle began
     if (illegal) begin
       velocity_n = {VB{1'b0}};
       accel_n = {AB{1'b0}};
@@ -417,14 +464,14 @@ module prenc_velocity #(
       moved_n = 1'b1;
       since_step_n = {{(TB - 1){1'b0}}, 1'b1};
       lead_n = {LB{1'b0}};
-      // (_n: what this cycle has decided so far, as the model reads it)
-      if (held_n && !reversal) begin  // it did not reverse: the acceleration was wrong
+      // held, decaying and accel as the cycle began (the model's held0, decaying0, accel0)
+      if (held_reg && !reversal) begin  // it did not reverse: the acceleration was wrong
         accel_n = {AB{1'b0}};
         have_prev_n = 1'b0;
         last_fit_n = 1'b0;
       end
       held_n = 1'b0;
-      if (decaying_n) begin
+      if (decaying_reg) begin
         decaying_n = 1'b0;
         accel_n = {AB{1'b0}};
         if (state_n == S_DECAY) begin
@@ -462,10 +509,11 @@ module prenc_velocity #(
           mul_left_n = CB[5:0];
           product_n = {PB{1'b0}};
           state_n = S_CROSS1;
-        end else if ((closes || !have_prev_n) && accel_n == {AB{1'b0}}) begin
+        end else if ((closes || !have_prev_n) && accel_reg == {AB{1'b0}} && !held_reg) begin
           // The mean since A, unless an acceleration is known (after a reversal): then
           // the velocity integrates it until a fit.
           div_start = 1'b1;
+          div_cancel = 1'b0;  // a stop in this cycle does not cancel the new mean
           div_num = {{(NB - CB - FRAC){1'b0}}, n, {FRAC{1'b0}}};
           div_den = {1'b0, since_a_reg};
           state_n = S_MEAN;
@@ -509,7 +557,12 @@ module prenc_velocity #(
       state_reg <= S_IDLE;
       negative_reg <= 1'b0;
       v01_reg <= {QB{1'b0}};
-      cross_reg <= {PB{1'b0}};
+      cross_reg <= {(XB - 1){1'b0}};
+      diff_reg <= {XB{1'b0}};
+      n_less_reg <= {(CB + 1){1'b0}};
+      p_sum_reg <= {(TB + 1){1'b0}};
+      d_reg <= {(QB + 1){1'b0}};
+      v_fit_reg <= {(PB + 1){1'b0}};
       mul_left_reg <= 6'd0;
       multiplier_reg <= {MB{1'b0}};
       multiplicand_reg <= {AB{1'b0}};
@@ -543,6 +596,11 @@ module prenc_velocity #(
       negative_reg <= negative_n;
       v01_reg <= v01_n;
       cross_reg <= cross_n;
+      diff_reg <= diff_n;
+      n_less_reg <= n_less_n;
+      p_sum_reg <= p_sum_n;
+      d_reg <= d_n;
+      v_fit_reg <= v_fit_n;
       mul_left_reg <= mul_left_n;
       multiplier_reg <= multiplier_n;
       multiplicand_reg <= multiplicand_n;

@@ -21,6 +21,13 @@ valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 - Without a valid velocity: the fraction is the quarter's middle, nothing extrapolated,
   and `interpolated` is 0.
 
+Three register stages, so that no two long carry chains follow each other: (A) the
+fraction clamped (by its bits: it lies in (-2, 3) quarters), with pos_hyb and the
+flags; (B) the fraction plus the extrapolation; (C) the output. The extrapolation,
+velocity x LOOKAHEAD_HALVES, comes from a registered adder tree of three levels: it
+uses the velocity of three clocks before. The output is OUTPUT_DELAY = 3 clocks after
+pos_hyb.
+
 fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
 h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter. The outputs
 are registered (one cycle).
@@ -30,7 +37,9 @@ from __future__ import annotations
 
 from .velocity import FRAC, LEAD_LIMIT
 
-STEP_DELAY = 3   # decoder step -> the cycle before pos_hyb shows it (prenc_position: 4)
+STEP_DELAY = 3     # decoder step -> the cycle before pos_hyb shows it (prenc_position: 4)
+OUTPUT_DELAY = 3   # pos_hyb -> fine_pos
+TREE_DELAY = 3     # velocity -> velocity x LOOKAHEAD_HALVES
 
 
 class FinePosition:
@@ -50,30 +59,33 @@ class FinePosition:
         self.cw_d = [1] * STEP_DELAY
         self.travel = 0
         self.cw = 1
+        self.tree = [0] * TREE_DELAY                 # velocity x LOOKAHEAD_HALVES, in flight
+        self.a = (0, 0, 0, 0)                        # stage A: fraction, pos_hyb, valid, velocity_valid
+        self.b = (0, 0, 0, 0)                        # stage B: fraction + extrapolation, ...
         self.fine_pos = 0
         self.valid = 0
         self.interpolated = 0
-
-    def fraction(self, velocity: int, velocity_valid: int) -> int:
-        """The fraction of the quarter in F bits, truncated (and the extrapolation, signed)."""
-        f = self.fine_bits
-        if not velocity_valid:
-            return (1 << f) >> 1
-        edge = 0 if self.cw else 1 << FRAC
-        top = (1 << FRAC) - 1
-        frac = max(0, min(top, edge + self.travel))
-        frac += (velocity * self.lookahead_halves) >> 1
-        return frac >> (FRAC - f)
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
               velocity_valid: int, rst: int = 0) -> None:
         if rst:
             self.reset()
             return
+        f = self.fine_bits
         mask = (1 << self.width) - 1
-        self.fine_pos = ((pos_hyb << self.fine_bits) + self.fraction(velocity, velocity_valid)) & mask
-        self.valid = pos_valid
-        self.interpolated = int(pos_valid and velocity_valid)
+        # Stage C: the output.
+        sum_b, pos_b, valid_b, vv_b = self.b
+        fraction = (sum_b >> (FRAC - f)) if vv_b else ((1 << f) >> 1)
+        self.fine_pos = ((pos_b << f) + fraction) & mask
+        self.valid, self.interpolated = valid_b, int(valid_b and vv_b)
+        # Stage B: the fraction and the extrapolation.
+        frac_a, pos_a, valid_a, vv_a = self.a
+        self.b = (frac_a + (self.tree[-1] >> 1), pos_a, valid_a, vv_a)
+        # Stage A: the fraction clamped to the quarter.
+        edge = 0 if self.cw else 1 << FRAC
+        frac = max(0, min((1 << FRAC) - 1, edge + self.travel))
+        self.a = (frac, pos_hyb, pos_valid, velocity_valid)
+        self.tree = [velocity * self.lookahead_halves] + self.tree[:-1]
         if self.step_d[-1]:
             self.travel, self.cw = 0, self.cw_d[-1]
         else:

@@ -61,13 +61,14 @@ ACCEL_BITS = FRAC + 2      # signed (saturating)
 COUNT_BITS = 16            # edge positions, in quarters, modulo 2^COUNT_BITS
 LEAD_LIMIT = 2 << FRAC     # the predicted travel since the last step saturates at 2 quarters
 OVERDUE = 3 << (FRAC - 1)  # 1.5 quarters
-DIV_CLOCKS = QUOTIENT_BITS + 1   # from a division's start cycle to its done cycle
+DIV_CLOCKS = QUOTIENT_BITS + 2   # from a division's start cycle to its done cycle
 
 
 def full_clocks(timer_bits: int) -> int:
     """Cycles from a window's closing step to the cycle the fitted velocity shows: two
-    products of COUNT_BITS bits, three divisions, a product of TIMER_BITS + 1 bits."""
-    return 2 * COUNT_BITS + 3 * DIV_CLOCKS + timer_bits + 5
+    products of COUNT_BITS bits, the test, three divisions, the difference, a product of
+    TIMER_BITS + 1 bits, the sum."""
+    return 2 * COUNT_BITS + 3 * DIV_CLOCKS + timer_bits + 8
 
 
 def saturate(value: int, bits: int) -> int:
@@ -82,9 +83,10 @@ def _sign(value: int) -> int:
 
 class Divider:
     """Model of rtl/fine/prenc_divider.v: floor(num / den), a quotient bit per clock.
-    A start in cycle k gives `done` for one cycle in cycle k + DIV_CLOCKS; a quotient
-    that needs more than QUOTIENT_BITS bits (or den = 0) saturates to all ones; cancel
-    drops a division under way."""
+    A start in cycle k gives `done` for one cycle in cycle k + DIV_CLOCKS (it registers
+    its operands, checks for saturation, then takes a bit a clock); a quotient
+    that needs more than QUOTIENT_BITS bits (or den = 0) saturates to all ones; `cancel`
+    drops a division under way, and one starting in the same cycle."""
 
     def __init__(self) -> None:
         self.left = 0
@@ -98,12 +100,12 @@ class Divider:
             self.left -= 1
             if self.left == 0:
                 self.done, self.quotient = 1, self.result
-        if cancel:
-            self.left = 0
         if start:
             limit = (1 << QUOTIENT_BITS) - 1
             self.result = limit if den == 0 or num // den > limit else num // den
             self.left = DIV_CLOCKS - 1
+        if cancel:
+            self.left = 0
 
 
 class Velocity:
@@ -111,8 +113,8 @@ class Velocity:
     step, step_cw, illegal) and leaves the state as the RTL's registers after that
     cycle's edge."""
 
-    (IDLE, MEAN, CROSS1, CROSS2, CONSTANT, FIT_V01, FIT_V12, FIT_A, FIT_MUL,
-     DECAY) = range(10)
+    (IDLE, MEAN, CROSS1, CROSS2, DECIDE, CONSTANT, FIT_V01, FIT_V12, FIT_D, FIT_A, FIT_MUL,
+     FIT_LOAD, DECAY) = range(13)
 
     def __init__(self, window: int = 2048, timer_bits: int = 26):
         if not 12 <= timer_bits <= 32:
@@ -152,6 +154,9 @@ class Velocity:
         self.sign = 1           # the direction of the windows
         self.v01 = 0
         self.cross = 0          # n1 P2, then compared with n2 P1
+        self.diff = 0           # n1 P2 - n2 P1
+        self.d = 0              # v01 - v12
+        self.v_fit = 0          # the fitted velocity before saturation
         self.mul_left = 0
         self.multiplier = 0
         self.multiplicand = 0
@@ -174,6 +179,9 @@ class Velocity:
         start, num, den, cancel = 0, 0, 0, 0
         idle = self.state == self.IDLE
         velocity = self.velocity
+        # A step reads these as the cycle began (a hold or a stop in the same cycle does
+        # not count for it): in the RTL they do not wait for the zero-crossing test.
+        held0, decaying0, accel0 = self.held, self.decaying, self.accel
         mul_done = self.mul_left == 0
 
         # Between events: the velocity integrates accel (but while held at 0); the timers run.
@@ -206,8 +214,11 @@ class Velocity:
             self.cross = self.product
             self._multiply(self.n2, self.p1, COUNT_BITS, self.CROSS2)
         elif state == self.CROSS2 and mul_done:
-            diff = self.cross - self.product
-            constant = abs(diff) < self.n1 + self.n2
+            self.diff = self.cross - self.product
+            self.state = self.DECIDE
+        elif state == self.DECIDE:
+            diff = self.diff
+            constant = -(self.n1 + self.n2) < diff < self.n1 + self.n2
             same = int(diff < 0) == self.last_negative and self.last_fit
             self.last_negative, self.last_fit = int(diff < 0), int(not constant)
             if constant or not same:
@@ -224,17 +235,22 @@ class Velocity:
             start, num, den = 1, self.n2 << FRAC, self.p2
             self.state = self.FIT_V12
         elif state == self.FIT_V12 and div_done:
-            d = self.v01 - quotient
-            start, num, den = 1, abs(d) << 1, self.p1 + self.p2
-            self.sign = self.sign * _sign(d)    # the sign of the acceleration
+            self.d = self.v01 - quotient
+            self.state = self.FIT_D
+        elif state == self.FIT_D:
+            start, num, den = 1, abs(self.d) << 1, self.p1 + self.p2
+            self.sign = self.sign * _sign(self.d)    # the sign of the acceleration
             self.state = self.FIT_A
         elif state == self.FIT_A and div_done:
             accel = saturate(self.sign * quotient, ACCEL_BITS)
             self._multiply((self.p1 >> 1) + self.full_clocks, accel, self.timer_bits + 1, self.FIT_MUL)
         elif state == self.FIT_MUL and mul_done:
             # sign: the acceleration's; the windows' direction is the last step's.
+            self.v_fit = (self.v01 if self.cw else -self.v01) + self.product
+            self.state = self.FIT_LOAD
+        elif state == self.FIT_LOAD:
             direction = 1 if self.cw else -1
-            v_n = saturate(direction * self.v01 + self.product, VELOCITY_BITS)
+            v_n = saturate(self.v_fit, VELOCITY_BITS)
             self.accel, self.valid = self.multiplicand, 1
             if v_n * direction <= 0:   # decelerated through 0: it stops there
                 v_n, self.accel = 0, 0
@@ -243,20 +259,21 @@ class Velocity:
             self.accel = -self.sign * quotient
             self.state = self.IDLE
 
-        # A stop: the decay reached 0, or no step for 2^TIMER_BITS - 1 clocks.
-        if stop or timeout:
-            v_n, self.accel, self.valid, self.decaying, self.held = 0, 0, 1, 0, 0
-            self.have_prev = self.last_fit = self.step_speed = 0
-            cancel, start, self.state = 1, 0, self.IDLE
-        elif hold:
-            v_n, self.held, self.zero_at = 0, 1, self.since_step
-            cancel, start, self.state = 1, 0, self.IDLE
-        elif idle and not self.decaying and not step and not illegal and velocity != 0 \
+        if idle and not self.decaying and not step and not illegal and velocity != 0 \
                 and abs(self.lead) >= OVERDUE:
             # Overdue: decay to 0 over a third of the time since the step.
             self.sign = _sign(velocity)
             start, num, den = 1, 3 * abs(velocity), self.since_step
             self.state, self.decaying = self.DECAY, 1
+        # A hold, or a stop: the decay reached 0, or no step for 2^TIMER_BITS - 1 clocks.
+        # They cancel what the divider starts in this cycle.
+        if stop or timeout:
+            v_n, self.accel, self.valid, self.decaying, self.held = 0, 0, 1, 0, 0
+            self.have_prev = self.last_fit = self.step_speed = 0
+            cancel, self.state = 1, self.IDLE
+        elif hold:
+            v_n, self.held, self.zero_at, self.decaying = 0, 1, self.since_step, 0
+            cancel, self.state = 1, self.IDLE
 
         # Events, which win over all the above.
         if illegal:
@@ -270,15 +287,15 @@ class Velocity:
             reversal = self.moved and step_cw != self.cw
             self.cw, self.moved = step_cw, 1
             since_step_n, lead_n = 1, 0
-            if self.held and not reversal:   # it did not reverse: the acceleration was wrong
+            if held0 and not reversal:   # it did not reverse: the acceleration was wrong
                 self.accel, self.have_prev, self.last_fit = 0, 0, 0
             self.held = 0
-            if self.decaying:
+            if decaying0:
                 self.decaying, self.accel = 0, 0
                 if self.state == self.DECAY:
                     cancel, start, self.state = 1, 0, self.IDLE
             n = abs(((x - self.x_a + (1 << (COUNT_BITS - 1))) & mask) - (1 << (COUNT_BITS - 1)))
-            speed = abs(v_n)
+            speed = abs(velocity)   # as the cycle began (one carry chain less in the RTL)
             if reversal:
                 # The same edge crossed back at the speed it was crossed at; accel and the
                 # sign memory go on (the speed's trend turns: it grows again).
@@ -297,10 +314,10 @@ class Velocity:
                 if closes and self.have_prev:
                     self.n1, self.p1, self.n2, self.p2 = n, self.since_a, self.prev_n, self.prev_clocks
                     self._multiply(n, self.prev_clocks, COUNT_BITS, self.CROSS1)
-                elif (closes or not self.have_prev) and self.accel == 0:
+                elif (closes or not self.have_prev) and accel0 == 0 and not held0:
                     # The mean since A, unless an acceleration is known (after a reversal):
                     # then the velocity integrates it until a fit.
-                    start, num, den = 1, n << FRAC, self.since_a
+                    start, num, den, cancel = 1, n << FRAC, self.since_a, 0
                     self.state = self.MEAN
                 if closes:
                     self.have_prev, self.prev_n, self.prev_clocks = 1, n, self.since_a

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..fine.fine_position import STEP_DELAY, FinePosition
+from ..fine.fine_position import OUTPUT_DELAY, STEP_DELAY, FinePosition
 from ..fine.velocity import FRAC, Velocity
 from .encoder import Disc
 from .printing import Printing
@@ -50,7 +50,7 @@ SAMPLE_CLOCKS = 3000          # the baselines' sampling period: 100 us at 30 MHz
 DECODER_DELAY = 2 + FILTER + 1  # pins -> the decoder's registered step
 POSITION_DELAY = 4              # decoder -> pos_hyb
 # Clocks from the pins to the fine output (and the half clock of an edge's unknown place).
-LOOKAHEAD_HALVES = 2 * (DECODER_DELAY + POSITION_DELAY + 1) + 1
+LOOKAHEAD_HALVES = 2 * (DECODER_DELAY + POSITION_DELAY + OUTPUT_DELAY) + 1
 
 PRINTED = Printing(edge_error=0.05, phase_deg=10, duty_a=0.45, duty_b=0.55, eccentricity=0.2, seed=7)
 
@@ -194,7 +194,10 @@ def interpolate(sync: Sync, velocity: np.ndarray, fine_bits: int = FINE_BITS,
     travel = moved - moved[last]
     edge = np.where(aligned_cw[last] == 1, 0.0, 1.0)
     frac = np.clip(edge + travel, 0.0, 1.0 - 2.0 ** -48) + np.concatenate([[0.0], velocity[:-1]]) * lookahead_halves / 2
-    return np.floor((sync.pos_hyb + frac) * (1 << fine_bits))   # truncated, as the RTL
+    out = np.floor((sync.pos_hyb + frac) * (1 << fine_bits))   # truncated, as the RTL
+    # ... and OUTPUT_DELAY - 1 clocks later (prenc_fine_position's stages A to C).
+    d = OUTPUT_DELAY - 1
+    return np.concatenate([np.full(d, out[0]), out[:-d]]) if d else out
 
 
 # -- scoring ----------------------------------------------------------------------

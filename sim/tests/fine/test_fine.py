@@ -13,7 +13,7 @@ import pytest
 
 from prenc.core.input_conditioner import InputConditioner
 from prenc.core.quadrature import QuadratureDecoder
-from prenc.fine.fine_position import FinePosition
+from prenc.fine.fine_position import OUTPUT_DELAY, FinePosition
 from prenc.fine.velocity import FRAC, Velocity
 from prenc.virtual import fine_bench as fb
 from prenc.virtual.encoder import Disc
@@ -128,16 +128,23 @@ def test_the_fine_position_keeps_the_verified_quarter_but_for_the_extrapolation(
     fine_bits = 6
     out = fb.run_fine(sync, window=128, fine_bits=fine_bits, lookahead_halves=lookahead)
     quarters = 4 << fb.N
-    # fine_pos after clock c comes from pos_hyb of clock c.
+    # fine_pos after clock c comes from pos_hyb of clock c - (OUTPUT_DELAY - 1).
+    d = OUTPUT_DELAY - 1
+    pos_hyb = np.concatenate([np.full(d, sync.pos_hyb[0]), sync.pos_hyb[:-d]])
     quarter = out["fine"] >> fine_bits
-    step_off = (quarter - sync.pos_hyb + quarters // 2) % quarters - quarters // 2
+    step_off = (quarter - pos_hyb + quarters // 2) % quarters - quarters // 2
+    step_off[:OUTPUT_DELAY] = 0   # the stages fill after reset
     if lookahead == 0:
         assert (step_off == 0).all()
     else:
-        reach = np.abs(np.concatenate([[0.0], out["velocity"][:-1]])) * lookahead / 2
+        # The extrapolation uses a velocity a few clocks old: the largest of the last eight.
+        speed = np.abs(out["velocity"])
+        recent = np.max([np.concatenate([np.zeros(k), speed[:len(speed) - k]]) for k in range(8)], axis=0)
+        reach = recent * lookahead / 2
         frac = (out["fine"] % (1 << fine_bits)) / (1 << fine_bits)
         position = quarter + frac
-        off = (position - sync.pos_hyb + quarters / 2) % quarters - quarters / 2
+        off = (position - pos_hyb + quarters / 2) % quarters - quarters / 2
+        off[:OUTPUT_DELAY] = 0.5
         lsb = 2.0 ** -fine_bits   # truncated to F bits
         assert (off >= -reach - lsb).all() and (off < 1 + reach).all()
         assert (step_off != 0).any()   # the extrapolation does cross edges
@@ -145,7 +152,8 @@ def test_the_fine_position_keeps_the_verified_quarter_but_for_the_extrapolation(
 
 def test_without_a_velocity_the_fraction_is_the_quarters_middle():
     fine = FinePosition(n=6, fine_bits=4, lookahead_halves=9)
-    fine.clock(pos_hyb=37, pos_valid=1, step=0, step_cw=1, velocity=1 << 40, velocity_valid=0)
+    for _ in range(OUTPUT_DELAY):
+        fine.clock(pos_hyb=37, pos_valid=1, step=0, step_cw=1, velocity=1 << 40, velocity_valid=0)
     assert fine.fine_pos == 37 * 16 + 8 and fine.valid and not fine.interpolated
 
 

@@ -7,9 +7,12 @@ sticks at 0 for the last four turns, which puts the core in a reduced mode (nW).
 (prenc.board.biss, written from the protocol) reads frame after frame at 5 MHz and 1 MHz
 (6 and 30 clocks of the iCEBreaker's 30 MHz design clock). Every frame must carry, with a good
 CRC, what the board had on the clock before its latch (the frame's first falling
-edge): turns, pos_hyb, nE = pos_valid, nW = not a reduced mode. Every valid frame
-must also match the truth of the virtual encoder: the position within the core's
-latency, and the turns counted from the turn of the first valid position.
+edge): the pair {turns, position} of prenc_turns' register (the fine position, here
+FINE_BITS = 0: the quarter, extrapolated to the master's request), nE = its valid,
+nW = not a reduced mode. Every valid frame must also match the truth of the virtual
+encoder: the position that of the master's first falling edge (or, before the
+velocity is known, of the core's latency before it), and the turns counted from the
+turn of the first valid position.
 """
 
 from __future__ import annotations
@@ -67,8 +70,9 @@ class Board:
             valid = int(dut.u_core.pos_valid.value)
             if valid and self.first_valid is None:
                 self.first_valid = clock
-            before = {"turns": int(dut.u_turns.turns.value), "position": int(dut.u_core.pos_hyb.value),
-                      "valid": valid, "mode": int(dut.u_core.mode.value)}
+            pair = int(dut.u_turns.full.value)
+            before = {"turns": pair >> ST_BITS, "position": pair & ((1 << ST_BITS) - 1),
+                      "valid": int(dut.fine_valid_d.value), "mode": int(dut.u_core.mode.value)}
 
 
 @cocotb.test()
@@ -83,13 +87,16 @@ async def biss_frames_carry_the_core_and_the_turns_of_the_disc(dut):
     end = START_CLOCK + CW_CLOCKS + CCW_CLOCKS
     while round(get_sim_time("ns") / PERIOD_NS) < end:
         master = masters[frames % len(masters)]
-        reading, _ = await master.read(mt_bits=MT_BITS, st_bits=ST_BITS)
+        asked = []
+        reading, _ = await master.read(mt_bits=MT_BITS, st_bits=ST_BITS,
+                                       on_start=lambda: asked.append(get_sim_time("ns") / PERIOD_NS))
         clock, had = board.latches[-1]
         assert reading.crc_ok, (clock, reading)
         assert reading == biss.Reading(had["turns"], had["position"], not had["valid"],
                                        had["mode"] in (2, 3), True), (clock, reading, had)
         if had["valid"]:
-            truth = theta_at(np.arange(clock - latency - FILTER - 2, clock - latency + FILTER + 3))
+            request = int(asked[0])
+            truth = theta_at(np.arange(request - latency - FILTER - 2, request + 3))
             hybrid = set(disc.hybrid(truth).tolist())
             assert reading.position in hybrid, (clock, reading, sorted(hybrid))
             turn0 = int(np.floor(theta_at(np.array([board.first_valid - latency]))[0] / TURN))

@@ -77,7 +77,7 @@ async def matches_the_models_clock_by_clock(dut):
     fine = FinePosition(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES)
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
-    seen = {state: 0 for state in range(10)}
+    seen = {state: 0 for state in range(13)}
     stops = holds = 0
     columns = [inputs[k].tolist() for k in names]
     for c in range(total):
@@ -94,7 +94,7 @@ async def matches_the_models_clock_by_clock(dut):
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
     dut._log.info("seed %d: %d clocks, cycles per sequencer state %s, %d stops, %d clocks held",
                   seed, total, seen, stops, holds)
-    assert all(seen[s] > 0 for s in range(10)), seen   # every state of the sequencer ran
+    assert all(seen[s] > 0 for s in range(13)), seen   # every state of the sequencer ran
     assert stops >= 2 and holds > 0
 
 
