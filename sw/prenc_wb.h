@@ -26,7 +26,7 @@ extern "C" {
 #define PRENC_WB__VERSION__MINOR_bm 0xff00
 #define PRENC_WB__VERSION__MINOR_bp 8
 #define PRENC_WB__VERSION__MINOR_bw 8
-#define PRENC_WB__VERSION__MINOR_reset 0x1
+#define PRENC_WB__VERSION__MINOR_reset 0x2
 #define PRENC_WB__VERSION__MAJOR_bm 0xff0000
 #define PRENC_WB__VERSION__MAJOR_bp 16
 #define PRENC_WB__VERSION__MAJOR_bw 8
@@ -36,6 +36,12 @@ extern "C" {
 #define PRENC_WB__PARAMS__N_bm 0x1f
 #define PRENC_WB__PARAMS__N_bp 0
 #define PRENC_WB__PARAMS__N_bw 5
+#define PRENC_WB__PARAMS__FINE_BITS_bm 0x1e0
+#define PRENC_WB__PARAMS__FINE_BITS_bp 5
+#define PRENC_WB__PARAMS__FINE_BITS_bw 4
+#define PRENC_WB__PARAMS__FINE_bm 0x200
+#define PRENC_WB__PARAMS__FINE_bp 9
+#define PRENC_WB__PARAMS__FINE_bw 1
 #define PRENC_WB__PARAMS__FILTER_bm 0xffff0000
 #define PRENC_WB__PARAMS__FILTER_bp 16
 #define PRENC_WB__PARAMS__FILTER_bw 16
@@ -70,6 +76,9 @@ extern "C" {
 #define PRENC_WB__STATUS__TRACK2_VALID_bm 0x40
 #define PRENC_WB__STATUS__TRACK2_VALID_bp 6
 #define PRENC_WB__STATUS__TRACK2_VALID_bw 1
+#define PRENC_WB__STATUS__VELOCITY_VALID_bm 0x80
+#define PRENC_WB__STATUS__VELOCITY_VALID_bp 7
+#define PRENC_WB__STATUS__VELOCITY_VALID_bw 1
 
 // reg - prenc_wb::POSITION
 #define PRENC_WB__POSITION__POSITION_bm 0x3ffffff
@@ -166,6 +175,9 @@ extern "C" {
 #define PRENC_WB__SNAP_STATUS__TRACK2_VALID_bm 0x40
 #define PRENC_WB__SNAP_STATUS__TRACK2_VALID_bp 6
 #define PRENC_WB__SNAP_STATUS__TRACK2_VALID_bw 1
+#define PRENC_WB__SNAP_STATUS__VELOCITY_VALID_bm 0x80
+#define PRENC_WB__SNAP_STATUS__VELOCITY_VALID_bp 7
+#define PRENC_WB__SNAP_STATUS__VELOCITY_VALID_bw 1
 
 // reg - prenc_wb::SNAP_INCREMENTAL
 #define PRENC_WB__SNAP_INCREMENTAL__COUNT_bm 0xffffffff
@@ -176,6 +188,26 @@ extern "C" {
 #define PRENC_WB__SNAP_TIME__TIME_bm 0xffffffff
 #define PRENC_WB__SNAP_TIME__TIME_bp 0
 #define PRENC_WB__SNAP_TIME__TIME_bw 32
+
+// reg - prenc_wb::FINE_POS
+#define PRENC_WB__FINE_POS__FINE_POS_bm 0xffffffff
+#define PRENC_WB__FINE_POS__FINE_POS_bp 0
+#define PRENC_WB__FINE_POS__FINE_POS_bw 32
+
+// reg - prenc_wb::VELOCITY
+#define PRENC_WB__VELOCITY__VELOCITY_bm 0xffffffff
+#define PRENC_WB__VELOCITY__VELOCITY_bp 0
+#define PRENC_WB__VELOCITY__VELOCITY_bw 32
+
+// reg - prenc_wb::SNAP_FINE_POS
+#define PRENC_WB__SNAP_FINE_POS__FINE_POS_bm 0xffffffff
+#define PRENC_WB__SNAP_FINE_POS__FINE_POS_bp 0
+#define PRENC_WB__SNAP_FINE_POS__FINE_POS_bw 32
+
+// reg - prenc_wb::SNAP_VELOCITY
+#define PRENC_WB__SNAP_VELOCITY__VELOCITY_bm 0xffffffff
+#define PRENC_WB__SNAP_VELOCITY__VELOCITY_bp 0
+#define PRENC_WB__SNAP_VELOCITY__VELOCITY_bw 32
 
 // addrmap - prenc_wb
 typedef struct __attribute__ ((__packed__)) {
@@ -199,10 +231,14 @@ typedef struct __attribute__ ((__packed__)) {
     uint32_t SNAP_STATUS;
     uint32_t SNAP_INCREMENTAL;
     uint32_t SNAP_TIME;
+    uint32_t FINE_POS;
+    uint32_t VELOCITY;
+    uint32_t SNAP_FINE_POS;
+    uint32_t SNAP_VELOCITY;
 } prenc_wb_t;
 
 
-static_assert(sizeof(prenc_wb_t) == 0x50, "Packing error");
+static_assert(sizeof(prenc_wb_t) == 0x60, "Packing error");
 
 #ifdef __cplusplus
 }

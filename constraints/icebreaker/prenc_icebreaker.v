@@ -95,7 +95,8 @@ module prenc_icebreaker #(
     .FILTER   (FILTER),
     .ROM_FILE (ROM_FILE),
     .CLK_HZ   (CLK_HZ),
-    .BAUD     (BAUD)
+    .BAUD     (BAUD),
+    .FINE     (0)  // the UP5K's 5,280 cells hold the board (2,546) but not prenc_fine (~4,000)
   ) u_board (
     .clk             (clk),
     .rst             (rst),

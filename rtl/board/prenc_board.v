@@ -28,6 +28,8 @@
 //   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
 //                 period of the slowest MA). MA up to CLK_HZ / 5 (docs/biss-c.md)
+//   FINE          1: prenc_fine is built (fine position, velocity; default); 0: not (SSI
+//                 and BiSS-C send pos_hyb: the iCEBreaker's UP5K has no room for it)
 //   FINE_BITS     fraction bits of the quarter in SSI's and BiSS-C's position, 0..8
 //                 (default 0: the quarter, as pos_hyb)
 //   EXTRAPOLATE   1: SSI's and BiSS-C's position is extrapolated by the velocity to the
@@ -64,6 +66,7 @@ module prenc_board #(
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_HYBRID     = 1,
   parameter integer BISS_TIMEOUT_US = 20,
+  parameter integer FINE            = 1,
   parameter integer FINE_BITS       = 0,
   parameter integer EXTRAPOLATE     = 1,
   parameter integer VELOCITY_WINDOW = 2048,
@@ -121,6 +124,14 @@ module prenc_board #(
     if (BISS_HYBRID < 0 || BISS_HYBRID > 1) begin : g_bad_biss_hybrid
       initial $display("ERROR: %m: parameter BISS_HYBRID = %0d must be 0 or 1", BISS_HYBRID);
       prenc_board_parameter_BISS_HYBRID_must_be_0_or_1 u_stop ();
+    end
+    if (FINE < 0 || FINE > 1) begin : g_bad_fine
+      initial $display("ERROR: %m: parameter FINE = %0d must be 0 or 1", FINE);
+      prenc_board_parameter_FINE_must_be_0_or_1 u_stop ();
+    end
+    if (FINE == 0 && FINE_BITS != 0) begin : g_bad_fine_bits
+      initial $display("ERROR: %m: parameter FINE_BITS = %0d needs FINE = 1", FINE_BITS);
+      prenc_board_parameter_FINE_BITS_needs_FINE_1 u_stop ();
     end
     if (EXTRAPOLATE < 0 || EXTRAPOLATE > 1) begin : g_bad_extrapolate
       initial $display("ERROR: %m: parameter EXTRAPOLATE = %0d must be 0 or 1", EXTRAPOLATE);
@@ -227,7 +238,7 @@ module prenc_board #(
   // Fine position and velocity (FINE_BITS and VELOCITY_WINDOW are checked there).
   localparam integer F         = FINE_BITS;
   localparam integer POS_BITS  = N + 2 + F;
-  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1) ? 2 * (10 + FILTER) : 0;
+  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1 && FINE == 1) ? 2 * (10 + FILTER) : 0;
   wire [POS_BITS-1:0] fine_pos;
   wire                fine_valid;
   wire                interpolated;
@@ -235,26 +246,37 @@ module prenc_board #(
   wire [49:0]         accel;
   wire                velocity_valid;
 
-  prenc_fine #(
-    .N                (N),
-    .FINE_BITS        (F),
-    .LOOKAHEAD_HALVES (LOOKAHEAD),
-    .WINDOW           (VELOCITY_WINDOW)
-  ) u_fine (
-    .clk            (clk),
-    .rst            (rst),
-    .pos_hyb        (pos_hyb),
-    .pos_valid      (valid),
-    .step           (sync_step),
-    .step_cw        (direction),
-    .illegal        (sync_illegal),
-    .fine_pos       (fine_pos),
-    .fine_valid     (fine_valid),
-    .interpolated   (interpolated),
-    .velocity       (velocity),
-    .accel          (accel),
-    .velocity_valid (velocity_valid)
-  );
+  generate
+    if (FINE == 1) begin : g_fine
+      prenc_fine #(
+        .N                (N),
+        .FINE_BITS        (F),
+        .LOOKAHEAD_HALVES (LOOKAHEAD),
+        .WINDOW           (VELOCITY_WINDOW)
+      ) u_fine (
+        .clk            (clk),
+        .rst            (rst),
+        .pos_hyb        (pos_hyb),
+        .pos_valid      (valid),
+        .step           (sync_step),
+        .step_cw        (direction),
+        .illegal        (sync_illegal),
+        .fine_pos       (fine_pos),
+        .fine_valid     (fine_valid),
+        .interpolated   (interpolated),
+        .velocity       (velocity),
+        .accel          (accel),
+        .velocity_valid (velocity_valid)
+      );
+    end else begin : g_no_fine
+      assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
+      assign fine_valid     = valid;
+      assign interpolated   = 1'b0;
+      assign velocity       = 51'd0;
+      assign accel          = 50'd0;
+      assign velocity_valid = 1'b0;
+    end
+  endgenerate
 
   // Multi-turn from the fine position and the incremental count (in the fine units);
   // `turns_full` is {turns, fine position} of the clock before, always one pair.
@@ -356,6 +378,7 @@ module prenc_board #(
 
   wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy, biss_busy, biss_latch,
                      turns_placed, turns, slot_held, fine_held, interpolated, velocity, accel,
+                     sync_step, sync_illegal,
                      velocity_valid};
 
 endmodule

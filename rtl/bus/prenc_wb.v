@@ -12,15 +12,22 @@
 //   0x2C TRACK_ERRORS (track 2 << 16 | track 1)   0x30 SYNC_ERRORS   0x34 TIMESTAMP
 //   0x38 IRQ_STATUS (write 1 to clear)   0x3C IRQ_ENABLE
 //   0x40 SNAP_POS_HYB  0x44 SNAP_STATUS  0x48 SNAP_INCREMENTAL  0x4C SNAP_TIME
+//   0x50 FINE_POS  0x54 VELOCITY  0x58 SNAP_FINE_POS  0x5C SNAP_VELOCITY
 //
 // Bus: classic Wishbone B4 slave, word addresses (wb_adr_i = byte offset / 4, as
 // LiteX's bus), one access per three clocks: ack one clock after cyc & stb, with the
 // read data. Writes honour wb_sel_i[0] (every writable field is in byte 0); other
 // offsets up to 0x7C read 0 and ignore writes. wb_err_o is never raised.
 //
-// Snapshot: writing CTRL.snapshot = 1 latches pos_hyb, STATUS, INCREMENTAL and
-// TIMESTAMP on one clock (the clock the write is acknowledged), so that they belong
-// together however long the reads that follow take.
+// Snapshot: writing CTRL.snapshot = 1 latches pos_hyb, STATUS, INCREMENTAL, TIMESTAMP,
+// FINE_POS and VELOCITY on one clock (the clock the write is acknowledged), so that they
+// belong together however long the reads that follow take.
+//
+// Fine position and velocity (prenc_fine, docs/fine.md; FINE = 1): FINE_POS is the
+// hybrid position with FINE_BITS more bits, extrapolated (EXTRAPOLATE = 1) so that the
+// snapshot holds the fine position of the clock its write was sampled
+// (LOOKAHEAD_HALVES = 2 (10 + FILTER) - 1; a live read is one clock older). VELOCITY is
+// prenc_velocity's in quarters per clock x 2^32, signed, saturating at 32 bits.
 //
 // Interrupt: IRQ_STATUS.lost_valid is set when pos_valid falls, .mode_change when mode
 // changes (an event beats a clear on the same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
@@ -28,7 +35,9 @@
 // Parameters: those of prenc_core (N, TAPS, FILTER, ROM_FILE, and its decision and build
 // options LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
 // SCORE_LIMIT, CONV_REG, passed to it as they are; the counters are 32-bit and 16-bit,
-// as the map), checked there; N <= 24 fits the map's fields.
+// as the map), checked there; N <= 24 fits the map's fields. FINE (1: prenc_fine is
+// built; 0: not, FINE_POS reads POS_HYB and VELOCITY 0), FINE_BITS (0..8, default 8;
+// N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048).
 
 `resetall
 `timescale 1ns / 1ps
@@ -47,7 +56,11 @@ module prenc_wb #(
   parameter integer HYPOTHESES  = 1,
   parameter integer SCORE_UP    = 4,
   parameter integer SCORE_LIMIT = 12,
-  parameter integer CONV_REG    = 0
+  parameter integer CONV_REG    = 0,
+  parameter integer FINE            = 1,
+  parameter integer FINE_BITS       = (FINE == 1) ? 8 : 0,
+  parameter integer EXTRAPOLATE     = 1,
+  parameter integer VELOCITY_WINDOW = 2048
 ) (
   input  wire         clk,
   input  wire         rst,
@@ -94,14 +107,31 @@ module prenc_wb #(
   localparam [4:0] A_SNAP_STATUS      = 5'h11;
   localparam [4:0] A_SNAP_INCREMENTAL = 5'h12;
   localparam [4:0] A_SNAP_TIME        = 5'h13;
+  localparam [4:0] A_FINE_POS         = 5'h14;
+  localparam [4:0] A_VELOCITY         = 5'h15;
+  localparam [4:0] A_SNAP_FINE_POS    = 5'h16;
+  localparam [4:0] A_SNAP_VELOCITY    = 5'h17;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_0100;  // 0.1.0
+  localparam [31:0] VERSION = 32'h0000_0200;  // 0.2.0
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n
       initial $display("ERROR: %m: parameter N = %0d out of range 2..24 (the map's fields)", N);
       prenc_wb_parameter_N_out_of_range_2_to_24 u_stop ();
+    end
+    if (FINE < 0 || FINE > 1) begin : g_bad_fine
+      initial $display("ERROR: %m: parameter FINE = %0d must be 0 or 1", FINE);
+      prenc_wb_parameter_FINE_must_be_0_or_1 u_stop ();
+    end
+    if (N + 2 + FINE_BITS > 32 || (FINE == 0 && FINE_BITS != 0)) begin : g_bad_fine_bits
+      initial $display("ERROR: %m: parameter FINE_BITS = %0d: N + 2 + FINE_BITS <= 32, and 0 with FINE = 0",
+                       FINE_BITS);
+      prenc_wb_parameter_FINE_BITS_out_of_range u_stop ();
+    end
+    if (EXTRAPOLATE < 0 || EXTRAPOLATE > 1) begin : g_bad_extrapolate
+      initial $display("ERROR: %m: parameter EXTRAPOLATE = %0d must be 0 or 1", EXTRAPOLATE);
+      prenc_wb_parameter_EXTRAPOLATE_must_be_0_or_1 u_stop ();
     end
     if (FILTER < 0 || FILTER > 65535) begin : g_bad_filter
       initial $display("ERROR: %m: parameter FILTER = %0d out of range 0..65535", FILTER);
@@ -176,7 +206,53 @@ module prenc_wb #(
     .sync_illegal  (sync_illegal)
   );
 
-  wire [6:0] status = {track2_valid, track1_valid, direction, mode, pos_valid};
+  // Fine position and velocity.
+  localparam integer W         = N + 2 + FINE_BITS;
+  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1) ? 2 * (10 + FILTER) - 1 : 0;
+  wire [W-1:0] fine_pos;
+  wire         fine_valid;
+  wire         interpolated;
+  wire [50:0]  velocity;
+  wire [49:0]  accel;
+  wire         velocity_valid;
+
+  generate
+    if (FINE == 1) begin : g_fine
+      prenc_fine #(
+        .N                (N),
+        .FINE_BITS        (FINE_BITS),
+        .LOOKAHEAD_HALVES (LOOKAHEAD),
+        .WINDOW           (VELOCITY_WINDOW)
+      ) u_fine (
+        .clk            (clk),
+        .rst            (rst),
+        .pos_hyb        (pos_hyb),
+        .pos_valid      (pos_valid),
+        .step           (sync_step),
+        .step_cw        (direction),
+        .illegal        (sync_illegal),
+        .fine_pos       (fine_pos),
+        .fine_valid     (fine_valid),
+        .interpolated   (interpolated),
+        .velocity       (velocity),
+        .accel          (accel),
+        .velocity_valid (velocity_valid)
+      );
+    end else begin : g_no_fine
+      assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
+      assign fine_valid     = pos_valid;
+      assign interpolated   = 1'b0;
+      assign velocity       = 51'd0;
+      assign accel          = 50'd0;
+      assign velocity_valid = 1'b0;
+    end
+  endgenerate
+
+  // VELOCITY: quarters per clock x 2^32 (the velocity's top 35 bits), saturated to 32.
+  wire        v_fits = (velocity[50:47] == 4'b0000) || (velocity[50:47] == 4'b1111);
+  wire [31:0] velocity_word = v_fits ? velocity[47:16] : {velocity[50], {31{~velocity[50]}}};
+
+  wire [7:0] status = {velocity_valid, track2_valid, track1_valid, direction, mode, pos_valid};
 
   // Bus access: one acknowledged access per cyc & stb, ack for one clock.
   wire access = wb_cyc_i & wb_stb_i & ~wb_ack_o;
@@ -189,9 +265,11 @@ module prenc_wb #(
 
   // Snapshot registers.
   reg [N+1:0] snap_pos_hyb;
-  reg [6:0]   snap_status;
+  reg [7:0]   snap_status;
   reg [31:0]  snap_incremental;
   reg [31:0]  snap_time;
+  reg [W-1:0] snap_fine_pos;
+  reg [31:0]  snap_velocity;
 
   always @(posedge clk) begin
     if (rst) begin
@@ -225,16 +303,32 @@ module prenc_wb #(
   always @(posedge clk) begin
     if (rst) begin
       snap_pos_hyb     <= {N+2{1'b0}};
-      snap_status      <= 7'd0;
+      snap_status      <= 8'd0;
       snap_incremental <= 32'd0;
       snap_time        <= 32'd0;
+      snap_fine_pos    <= {W{1'b0}};
+      snap_velocity    <= 32'd0;
     end else if (snapshot) begin
       snap_pos_hyb     <= pos_hyb;
       snap_status      <= status;
       snap_incremental <= incremental;
       snap_time        <= timestamp;
+      snap_fine_pos    <= fine_pos;
+      snap_velocity    <= velocity_word;
     end
   end
+
+  wire [31:0] fine_word;
+  wire [31:0] snap_fine_word;
+  generate
+    if (W < 32) begin : g_fine_word
+      assign fine_word      = {{(32 - W){1'b0}}, fine_pos};
+      assign snap_fine_word = {{(32 - W){1'b0}}, snap_fine_pos};
+    end else begin : g_fine_word_full
+      assign fine_word      = fine_pos;
+      assign snap_fine_word = snap_fine_pos;
+    end
+  endgenerate
 
   // Read data, registered with ack.
   always @(posedge clk) begin
@@ -242,9 +336,9 @@ module prenc_wb #(
       case (wb_adr_i)
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
-        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 11'd0, N[4:0]};
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 6'd0, FINE[0], FINE_BITS[3:0], N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};
-        A_STATUS:           wb_dat_o <= {25'd0, status};
+        A_STATUS:           wb_dat_o <= {24'd0, status};
         A_POSITION:         wb_dat_o <= {{(30 - N){1'b0}}, position};
         A_POS_ABS:          wb_dat_o <= {{(32 - N){1'b0}}, pos_abs};
         A_POS_HYB:          wb_dat_o <= {{(30 - N){1'b0}}, pos_hyb};
@@ -257,16 +351,21 @@ module prenc_wb #(
         A_IRQ_STATUS:       wb_dat_o <= {30'd0, irq_status};
         A_IRQ_ENABLE:       wb_dat_o <= {30'd0, irq_enable};
         A_SNAP_POS_HYB:     wb_dat_o <= {{(30 - N){1'b0}}, snap_pos_hyb};
-        A_SNAP_STATUS:      wb_dat_o <= {25'd0, snap_status};
+        A_SNAP_STATUS:      wb_dat_o <= {24'd0, snap_status};
         A_SNAP_INCREMENTAL: wb_dat_o <= snap_incremental;
         A_SNAP_TIME:        wb_dat_o <= snap_time;
+        A_FINE_POS:         wb_dat_o <= fine_word;
+        A_VELOCITY:         wb_dat_o <= velocity_word;
+        A_SNAP_FINE_POS:    wb_dat_o <= snap_fine_word;
+        A_SNAP_VELOCITY:    wb_dat_o <= snap_velocity;
         default:            wb_dat_o <= 32'd0;
       endcase
     end
   end
 
   assign wb_err_o = 1'b0;
-  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3], sync_step, sync_illegal};
+  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3], sync_step, sync_illegal, fine_valid,
+                     interpolated, accel, velocity[15:0]};
   assign irq      = |(irq_status & irq_enable);
 
 endmodule

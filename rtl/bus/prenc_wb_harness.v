@@ -43,7 +43,8 @@ module prenc_wb_harness #(
     .N        (N),
     .TAPS     (TAPS),
     .FILTER   (FILTER),
-    .ROM_FILE (ROM_FILE)
+    .ROM_FILE (ROM_FILE),
+    .FINE     (0)  // the UP5K holds the bus and the core, not prenc_fine (docs/fine.md)
   ) u_wb (
     .clk       (clk),
     .rst       (rst),

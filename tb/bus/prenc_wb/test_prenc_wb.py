@@ -9,8 +9,10 @@ generates from the map (rtl/bus/prenc_wb.rdl, by scripts/regmap.py).
 - While the virtual encoder turns (misreads, reversals): each read returns what the
   core showed on the clock the access was sampled, and the position, valid and mode
   are the model's (prenc.core.reader.Reader) on that clock. Snapshots taken at random
-  times hold the position, status, count and timestamp of one clock, the clock after
-  the write, while the live registers move on.
+  times hold the position, status, count, timestamp, fine position and velocity of one
+  clock, the clock after the write, while the live registers move on. (The fine
+  position and velocity themselves are held to their models in tb/fine/prenc_fine and
+  to the truth in tb/bus/prenc_wb's velocity test below.)
 - Interrupts through a missed-state run: a status bit is set one clock after its event
   (pos_valid falls, mode changes) and at no other time, falls only when written 1,
   and irq = |(status & enable) on every clock, whatever the mask.
@@ -37,7 +39,9 @@ from common import PERIOD_NS, drive_events, rng, to_int_x_as_zero
 from prenc.codes.debruijn import Code
 from prenc.core.predictor import taps_mask
 from prenc.core.reader import Reader
+from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.scenarios import scenarios
+from prenc.virtual.trajectory import Trajectory
 from runner import REPO, SIM_BUILD, rom_file, run
 
 TOPLEVEL = "prenc_wb"
@@ -71,6 +75,9 @@ class Outputs:
     irq_enable: int
     irq: int
     resolution: int
+    fine: int
+    vword: int
+    vvalid: int
 
 
 class Bench:
@@ -120,7 +127,7 @@ class Bench:
                        core.incremental, core.direction, core.track1_pos, core.track1_valid,
                        core.track2_pos, core.track2_valid, core.track1_errors, core.track2_errors,
                        core.sync_errors, dut.timestamp, dut.irq_status, dut.irq_enable, dut.irq,
-                       dut.resolution)
+                       dut.resolution, dut.fine_word, dut.velocity_word, dut.velocity_valid)
             row = Outputs(*(to_int_x_as_zero(s.value) for s in signals))
             self.log.append(row)
             if row.ack:
@@ -166,7 +173,7 @@ def field_value(reg, name: str, word: int) -> int:
 # Which of the core's outputs each field of the map shows (the field positions come from
 # the RDL, through the generated register model).
 STATUS_FIELDS = {"valid": "valid", "mode": "mode", "direction": "direction",
-                 "track1_valid": "t1valid", "track2_valid": "t2valid"}
+                 "track1_valid": "t1valid", "track2_valid": "t2valid", "velocity_valid": "vvalid"}
 SOURCES = {
     "CTRL": {"resolution": "resolution", "clear_errors": None, "snapshot": None},
     "STATUS": STATUS_FIELDS,
@@ -183,6 +190,10 @@ SOURCES = {
     "SNAP_STATUS": STATUS_FIELDS,
     "SNAP_INCREMENTAL": {"count": "incremental"},
     "SNAP_TIME": {"time": "timestamp"},
+    "FINE_POS": {"fine_pos": "fine"},
+    "VELOCITY": {"velocity": "vword"},
+    "SNAP_FINE_POS": {"fine_pos": "fine"},
+    "SNAP_VELOCITY": {"velocity": "vword"},
 }
 
 
@@ -210,8 +221,11 @@ async def registers_after_reset_and_writes(dut):
                 assert got == field.default, f"{reg.inst_name}.{field.inst_name} = {got}, RDL reset {field.default}"
     assert await regs.PARAMS.n.read() == n
     assert await regs.PARAMS.filter.read() == filter_len
+    assert await regs.PARAMS.fine.read() == int(dut.FINE.value)
+    assert await regs.PARAMS.fine_bits.read() == int(dut.FINE_BITS.value)
     assert await regs.STATUS.valid.read() == 0 and await regs.STATUS.mode.read() == 0
-    for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME", "TRACK_ERRORS"):
+    for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME", "SNAP_FINE_POS",
+                 "SNAP_VELOCITY", "TRACK_ERRORS"):
         assert await getattr(regs, name).read() == 0, name
     # The timestamp counts clocks.
     t0, s0 = await bench.access(regs.TIMESTAMP.address)
@@ -237,7 +251,7 @@ async def registers_after_reset_and_writes(dut):
             await bench.access(reg.address, 0xFFFF_FFFF)
     for name, value in before.items():
         assert (await bench.access(getattr(regs, name).address))[0] == value, name
-    for offset in range(0x50, MAP_END, 4):
+    for offset in range(0x60, MAP_END, 4):
         await bench.access(offset, 0xFFFF_FFFF)
         assert (await bench.access(offset))[0] == 0, f"offset {offset:#x}"
     assert int(dut.wb_err_o.value) == 0
@@ -257,7 +271,7 @@ async def reads_and_snapshots_while_the_encoder_moves(dut):
     await bench.start(enc)
     regs = bench.regs
     live = ["STATUS", "POSITION", "POS_ABS", "POS_HYB", "INCREMENTAL", "TRACK1", "TRACK2",
-            "TRACK_ERRORS", "SYNC_ERRORS", "TIMESTAMP", "CTRL"]
+            "TRACK_ERRORS", "SYNC_ERRORS", "TIMESTAMP", "CTRL", "FINE_POS", "VELOCITY"]
     checked = valid_reads = snapshots_moved = 0
     while len(bench.log) < len(enc) - 200:
         choice = r.random()
@@ -269,7 +283,8 @@ async def reads_and_snapshots_while_the_encoder_moves(dut):
             await bench.clocks(r.randrange(1, 60))
             snap = bench.log[s + 1]  # latched on the edge after the write's
             got = {name: await getattr(regs, name).read()
-                   for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME")}
+                   for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME",
+                                "SNAP_FINE_POS", "SNAP_VELOCITY")}
             want = {name: expected_word(getattr(regs, name), snap) for name in got}
             assert got == want, f"snapshot of clock {s + 1}: {got} != {want}"
             m = model[s + 1]
@@ -348,6 +363,44 @@ async def interrupts_follow_their_events(dut):
         assert log[k].irq == int(bool(log[k].irq_status & log[k].irq_enable)), f"clock {k}: irq"
     dut._log.info("events %s, %d interrupts seen and cleared", events, raised)
     assert events["lost_valid"] > 0 and events["mode_change"] > 0 and raised > 0
+
+
+@cocotb.test()
+async def the_snapshot_holds_the_fine_position_and_velocity_of_its_clock(dut):
+    """A steady turn (after lock and the velocity's first windows): each snapshot's fine
+    position against the true angle at the clock its write was sampled, its velocity
+    against the true speed; the goals of issue 37 (1/256 slot RMS, 0.05 %)."""
+    n, filter_len, fine_bits = len(dut.pos_hyb) - 2, int(dut.FILTER.value), int(dut.FINE_BITS.value)
+    r = rng()
+    speed = 0.003 * r.uniform(0.8, 1.2)  # slots per clock
+    settle = int((n + 8) / speed) + 4 * 2048
+    traj = Trajectory(clk_hz=1, start=r.uniform(0, 1 << n)).constant(speed, settle + 12_000)
+    enc = VirtualEncoder(Disc(n)).run(traj)
+    bench = Bench(dut)
+    await bench.start(enc)
+    regs = bench.regs
+    await bench.clocks(settle)
+    length, errors, v_errors = 1 << n, [], []
+    while len(bench.log) < len(enc) - 300:
+        ctrl, _ = await bench.access(regs.CTRL.address)
+        _, s = await bench.access(regs.CTRL.address, ctrl | 0b100)
+        await bench.clocks(r.randrange(1, 40))
+        status = await regs.SNAP_STATUS.read()
+        fine = await regs.SNAP_FINE_POS.read()
+        velocity = await regs.SNAP_VELOCITY.read()
+        assert field_value(regs.SNAP_STATUS, "valid", status) and \
+            field_value(regs.SNAP_STATUS, "velocity_valid", status), f"clock {s + 1}: {status:#x}"
+        truth = traj.theta[s + 1]
+        err = fine / (4 << fine_bits) - truth
+        errors.append((err + length / 2) % length - length / 2)
+        v_errors.append((velocity - (velocity >> 31 << 32)) / 2 ** 32 / (4 * speed) - 1)
+        await bench.clocks(r.randrange(50, 400))
+    rms = (sum(e * e for e in errors) / len(errors)) ** 0.5
+    dut._log.info("%d snapshots: fine position %.5f slot RMS (max %.5f), velocity error max %.4f %%",
+                  len(errors), rms, max(map(abs, errors)), 100 * max(map(abs, v_errors)))
+    assert len(errors) >= 20
+    assert rms <= 1 / 256 and max(map(abs, errors)) <= 1 / 64
+    assert max(map(abs, v_errors)) <= 0.0005
 
 
 def wb_parameters(n: int, filter_len: int) -> dict:
