@@ -205,6 +205,53 @@ module prenc_board #(
     .sync_illegal  (sync_illegal)
   );
 
+  // Fine position and velocity (FINE_BITS and VELOCITY_WINDOW are checked there).
+  localparam integer F         = FINE_BITS;
+  localparam integer POS_BITS  = N + 2 + F;
+  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1 && FINE == 1) ? 2 * (10 + FILTER) : 0;
+  wire [POS_BITS-1:0] fine_pos;
+  wire                fine_valid;
+  wire                interpolated;
+  wire [50:0]         velocity;
+  wire [49:0]         accel;
+  wire                velocity_valid;
+  wire [31:0]         velocity_word;
+  wire [31:0]         fine_word = {{(32 - POS_BITS){1'b0}}, fine_pos};
+
+  generate
+    if (FINE == 1) begin : g_fine
+      prenc_fine #(
+        .N                (N),
+        .FINE_BITS        (F),
+        .LOOKAHEAD_HALVES (LOOKAHEAD),
+        .WINDOW           (VELOCITY_WINDOW)
+      ) u_fine (
+        .clk            (clk),
+        .rst            (rst),
+        .pos_hyb        (pos_hyb),
+        .pos_valid      (valid),
+        .step           (sync_step),
+        .step_cw        (direction),
+        .illegal        (sync_illegal),
+        .fine_pos       (fine_pos),
+        .fine_valid     (fine_valid),
+        .interpolated   (interpolated),
+        .velocity       (velocity),
+        .accel          (accel),
+        .velocity_valid (velocity_valid),
+        .velocity_word  (velocity_word)
+      );
+    end else begin : g_no_fine
+      assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
+      assign fine_valid     = valid;
+      assign interpolated   = 1'b0;
+      assign velocity       = 51'd0;
+      assign accel          = 50'd0;
+      assign velocity_valid = 1'b0;
+      assign velocity_word  = 32'd0;
+    end
+  endgenerate
+
   wire [15:0] link_errors;
   wire        snapshot;
 
@@ -230,53 +277,13 @@ module prenc_board #(
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
     .sync_errors   (sync_errors),
+    .fine_pos      (fine_word),
+    .velocity      (velocity_word),
+    .fine_info     ({2'b00, interpolated, velocity_valid, F[3:0]}),
     .clear_errors  (clear_errors),
     .link_errors   (link_errors),
     .snapshot      (snapshot)
   );
-
-  // Fine position and velocity (FINE_BITS and VELOCITY_WINDOW are checked there).
-  localparam integer F         = FINE_BITS;
-  localparam integer POS_BITS  = N + 2 + F;
-  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1 && FINE == 1) ? 2 * (10 + FILTER) : 0;
-  wire [POS_BITS-1:0] fine_pos;
-  wire                fine_valid;
-  wire                interpolated;
-  wire [50:0]         velocity;
-  wire [49:0]         accel;
-  wire                velocity_valid;
-
-  generate
-    if (FINE == 1) begin : g_fine
-      prenc_fine #(
-        .N                (N),
-        .FINE_BITS        (F),
-        .LOOKAHEAD_HALVES (LOOKAHEAD),
-        .WINDOW           (VELOCITY_WINDOW)
-      ) u_fine (
-        .clk            (clk),
-        .rst            (rst),
-        .pos_hyb        (pos_hyb),
-        .pos_valid      (valid),
-        .step           (sync_step),
-        .step_cw        (direction),
-        .illegal        (sync_illegal),
-        .fine_pos       (fine_pos),
-        .fine_valid     (fine_valid),
-        .interpolated   (interpolated),
-        .velocity       (velocity),
-        .accel          (accel),
-        .velocity_valid (velocity_valid)
-      );
-    end else begin : g_no_fine
-      assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
-      assign fine_valid     = valid;
-      assign interpolated   = 1'b0;
-      assign velocity       = 51'd0;
-      assign accel          = 50'd0;
-      assign velocity_valid = 1'b0;
-    end
-  endgenerate
 
   // Multi-turn from the fine position and the incremental count (in the fine units);
   // `turns_full` is {turns, fine position} of the clock before, always one pair.
@@ -377,9 +384,8 @@ module prenc_board #(
   assign mode            = mode_now;
 
   wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy, biss_busy, biss_latch,
-                     turns_placed, turns, slot_held, fine_held, interpolated, velocity, accel,
-                     sync_step, sync_illegal,
-                     velocity_valid};
+                     turns_placed, turns, slot_held, fine_held, velocity, accel, sync_step,
+                     sync_illegal};
 
 endmodule
 

@@ -12,6 +12,9 @@
 //            kind 0 ABS    pos_abs, 2 bytes        kind 1 HYBRID  pos_hyb, 3 bytes
 //            kind 2 INCR   incremental, 4 bytes    kind 3 TRACKS  t1, t2 (2 bytes), flags
 //            kind 4 STATUS version, N, track1/track2/sync/link error counters (2 bytes each)
+//            kind 5 FINE   fine position (4 bytes), velocity (4, quarters per clock x 2^32),
+//                          info (bits 3:0 FINE_BITS, 4 velocity valid, 5 interpolated),
+//                          the clock in MHz (1)
 //            FF NACK       code (1 unknown type, 2 bad length, 3 unknown kind), request type
 //   FLAGS    bit 7 pos_valid, bits 6:4 mode, bit 3 direction, bit 2 streaming
 //   SEQ      counts answers (mod 256); TIME microseconds since reset (mod 2^32)
@@ -30,6 +33,8 @@
 //   clk, rst               one clock; synchronous active-high reset
 //   rx, tx                 the UART lines
 //   pos_abs ... sync_errors   the core's outputs
+//   fine_pos, velocity, fine_info   prenc_fine's (FINE): the fine position zero-extended,
+//                          the velocity word, {2'b0, interpolated, velocity_valid, FINE_BITS}
 //   clear_errors           one clock, to the core (CLEAR)
 //   link_errors            rejected request frames since reset or CLEAR
 //   snapshot               one clock: an answer starts, with the core's values of this clock
@@ -60,6 +65,9 @@ module prenc_host_link #(
   input  wire [15:0]   track1_errors,
   input  wire [15:0]   track2_errors,
   input  wire [15:0]   sync_errors,
+  input  wire [31:0]   fine_pos,
+  input  wire [31:0]   velocity,
+  input  wire [7:0]    fine_info,
   output wire          clear_errors,
   output wire [15:0]   link_errors,
   output wire          snapshot
@@ -90,7 +98,8 @@ module prenc_host_link #(
     end
   endgenerate
 
-  localparam [7:0]  VERSION     = 8'd1;
+  localparam [7:0]  VERSION     = 8'd2;
+  localparam [31:0] CLK_MHZ     = CLK_HZ / 1000000;
   localparam [31:0] N_32        = N;
   localparam [31:0] US_LIMIT_32 = CLKS_PER_US - 1;
   localparam [15:0] US_LIMIT    = US_LIMIT_32[15:0];
@@ -100,7 +109,7 @@ module prenc_host_link #(
   localparam [7:0] REQ_CLEAR  = 8'h03;
   localparam [7:0] ANS_DATA   = 8'h80;
   localparam [7:0] ANS_NACK   = 8'hFF;
-  localparam [2:0] KIND_LAST  = 3'd4;
+  localparam [2:0] KIND_LAST  = 3'd5;
   localparam [2:0] KIND_STAT  = 3'd4;
 
   // --- UART and framing -------------------------------------------------------
@@ -341,6 +350,19 @@ module prenc_host_link #(
         payload[111:104] = sync_errors[7:0];
         payload[119:112] = link_errors_reg[15:8];
         payload[127:120] = link_errors_reg[7:0];
+        length = 8'd16;
+      end
+      ANS_DATA | 8'd5: begin
+        payload[55:48]   = fine_pos[31:24];
+        payload[63:56]   = fine_pos[23:16];
+        payload[71:64]   = fine_pos[15:8];
+        payload[79:72]   = fine_pos[7:0];
+        payload[87:80]   = velocity[31:24];
+        payload[95:88]   = velocity[23:16];
+        payload[103:96]  = velocity[15:8];
+        payload[111:104] = velocity[7:0];
+        payload[119:112] = fine_info;
+        payload[127:120] = CLK_MHZ[7:0];
         length = 8'd16;
       end
       default: begin  // NACK

@@ -215,6 +215,7 @@ module prenc_wb #(
   wire [50:0]  velocity;
   wire [49:0]  accel;
   wire         velocity_valid;
+  wire [31:0]  velocity_word;  // quarters per clock x 2^32, saturated
 
   generate
     if (FINE == 1) begin : g_fine
@@ -236,7 +237,8 @@ module prenc_wb #(
         .interpolated   (interpolated),
         .velocity       (velocity),
         .accel          (accel),
-        .velocity_valid (velocity_valid)
+        .velocity_valid (velocity_valid),
+        .velocity_word  (velocity_word)
       );
     end else begin : g_no_fine
       assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
@@ -245,12 +247,9 @@ module prenc_wb #(
       assign velocity       = 51'd0;
       assign accel          = 50'd0;
       assign velocity_valid = 1'b0;
+      assign velocity_word  = 32'd0;
     end
   endgenerate
-
-  // VELOCITY: quarters per clock x 2^32 (the velocity's top 35 bits), saturated to 32.
-  wire        v_fits = (velocity[50:47] == 4'b0000) || (velocity[50:47] == 4'b1111);
-  wire [31:0] velocity_word = v_fits ? velocity[47:16] : {velocity[50], {31{~velocity[50]}}};
 
   wire [7:0] status = {velocity_valid, track2_valid, track1_valid, direction, mode, pos_valid};
 
@@ -365,7 +364,7 @@ module prenc_wb #(
 
   assign wb_err_o = 1'b0;
   wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3], sync_step, sync_illegal, fine_valid,
-                     interpolated, accel, velocity[15:0]};
+                     interpolated, accel, velocity};
   assign irq      = |(irq_status & irq_enable);
 
 endmodule

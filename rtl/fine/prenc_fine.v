@@ -12,7 +12,9 @@
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
 //   WINDOW, TIMER_BITS               prenc_velocity's (2048, 26)
 //
-// Ports: as prenc_velocity's and prenc_fine_position's.
+// Ports: as prenc_velocity's and prenc_fine_position's, and
+//   velocity_word   the velocity in quarters per clock x 2^32, signed, saturated to 32 bits
+//                   (the Wishbone register's and the host link's unit)
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -36,8 +38,14 @@ module prenc_fine #(
   output wire                   interpolated,
   output wire [50:0]            velocity,
   output wire [49:0]            accel,
-  output wire                   velocity_valid
+  output wire                   velocity_valid,
+  output wire [31:0]            velocity_word
 );
+
+  // The velocity's top 35 bits (48 - 16 fractional bits), saturated to 32.
+  wire v_fits = (velocity[50:47] == 4'b0000) || (velocity[50:47] == 4'b1111);
+  assign velocity_word = v_fits ? velocity[47:16] : {velocity[50], {31{~velocity[50]}}};
+  wire unused_ok = &{1'b0, velocity[15:0]};
 
   prenc_velocity #(
     .WINDOW     (WINDOW),

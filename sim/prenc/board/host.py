@@ -31,7 +31,8 @@ from .protocol import Answer, FrameParser, Kind, Nack
 DEFAULT_BAUD = 115200
 KINDS = {k.name.lower(): k for k in Kind}
 CSV_FIELDS = ("host_time_s", "board_time_us", "seq", "kind", "valid", "mode", "direction",
-              "position", "angle_deg", "count", "track1", "track2", "track1_valid", "track2_valid")
+              "position", "angle_deg", "count", "track1", "track2", "track1_valid", "track2_valid",
+              "fine_position", "fine_bits", "velocity_rpm", "velocity_valid")
 
 
 class HostError(RuntimeError):
@@ -175,7 +176,17 @@ def angle_deg(answer: Answer, bits: int) -> float | None:
         return 360.0 * answer.values["position"] / (1 << bits)
     if answer.kind == Kind.HYBRID:
         return 360.0 * answer.values["position"] / (1 << (bits + 2))
+    if answer.kind == Kind.FINE:
+        return 360.0 * answer.values["fine_position"] / (1 << (bits + 2 + answer.values["fine_bits"]))
     return None
+
+
+def rpm_of(answer: Answer, bits: int) -> float | None:
+    """The board's velocity in rpm (a FINE answer whose velocity is valid), else None."""
+    v = answer.values
+    if answer.kind != Kind.FINE or not v["velocity_valid"]:
+        return None
+    return protocol.velocity_rpm(v["velocity"], v["clk_mhz"], bits)
 
 
 def as_dict(answer: Answer, bits: int) -> dict:
@@ -185,6 +196,9 @@ def as_dict(answer: Answer, bits: int) -> dict:
     angle = angle_deg(answer, bits)
     if angle is not None:
         out["angle_deg"] = round(angle, 4)
+    if answer.kind == Kind.FINE:
+        rpm = rpm_of(answer, bits)
+        out["velocity_rpm"] = None if rpm is None else round(rpm, 4)
     return out
 
 
@@ -199,22 +213,33 @@ def describe(answer: Answer, bits: int) -> str:
     if answer.kind == Kind.TRACKS:
         return (f"track1 {v['track1']} ({'valid' if v['track1_valid'] else 'not valid'}), "
                 f"track2 {v['track2']} ({'valid' if v['track2_valid'] else 'not valid'})  {flags}")
+    if answer.kind == Kind.FINE:
+        rpm = rpm_of(answer, bits)
+        speed = "velocity not valid" if rpm is None else f"{rpm:+.3f} rpm"
+        width = bits + 2 + v["fine_bits"]
+        return f"fine {v['fine_position']} / {1 << width} = {angle_deg(answer, bits):.4f} deg  {speed}  {flags}"
     return (f"status: protocol v{v['version']}, N={v['bits']}, errors track1 {v['track1_errors']}, "
             f"track2 {v['track2_errors']}, sync {v['sync_errors']}, link {v['link_errors']}  {flags}")
 
 
 class SpeedMeter:
-    """Speed in rpm from successive hybrid positions and board times (unwrapped)."""
+    """Speed in rpm from successive hybrid (or fine) positions and board times (unwrapped):
+    for a board without a velocity (FINE = 0)."""
 
     def __init__(self, bits: int):
-        self.counts = 1 << (bits + 2)
+        self.bits = bits
         self.last: tuple[int, int] | None = None
         self.rpm = 0.0
 
     def update(self, answer: Answer) -> float:
-        if answer.kind != Kind.HYBRID or not answer.valid:
+        if answer.kind not in (Kind.HYBRID, Kind.FINE) or not answer.valid:
             return self.rpm
-        now = (answer.values["position"], answer.time_us)
+        if answer.kind == Kind.FINE:
+            self.counts = 1 << (self.bits + 2 + answer.values["fine_bits"])
+            now = (answer.values["fine_position"], answer.time_us)
+        else:
+            self.counts = 1 << (self.bits + 2)
+            now = (answer.values["position"], answer.time_us)
         if self.last is not None:
             dt = (now[1] - self.last[1]) % (1 << 32)
             if dt > 0:
@@ -232,7 +257,10 @@ def _row(answer: Answer, bits: int, t0: float) -> dict:
             "angle_deg": "" if angle_deg(answer, bits) is None else f"{angle_deg(answer, bits):.4f}",
             "count": v.get("count", ""), "track1": v.get("track1", ""), "track2": v.get("track2", ""),
             "track1_valid": "" if "track1_valid" not in v else int(v["track1_valid"]),
-            "track2_valid": "" if "track2_valid" not in v else int(v["track2_valid"])}
+            "track2_valid": "" if "track2_valid" not in v else int(v["track2_valid"]),
+            "fine_position": v.get("fine_position", ""), "fine_bits": v.get("fine_bits", ""),
+            "velocity_rpm": "" if rpm_of(answer, bits) is None else f"{rpm_of(answer, bits):.4f}",
+            "velocity_valid": "" if "velocity_valid" not in v else int(v["velocity_valid"])}
 
 
 # --- commands --------------------------------------------------------------------
@@ -261,7 +289,7 @@ def cmd_monitor(args, out: TextIO | None = None) -> None:
     with Board.open(args.port, args.baud, args.timeout) as board:
         status = board.check_version()
         speed = SpeedMeter(board.bits)
-        board.start_stream(Kind.HYBRID, _period_us(args.rate))
+        board.start_stream(Kind.FINE, _period_us(args.rate))
         shown, last_status = 0, time.monotonic()
         try:
             for answer in board.answers():
@@ -270,12 +298,15 @@ def cmd_monitor(args, out: TextIO | None = None) -> None:
                 if answer.kind == Kind.STATUS:
                     status = answer
                     continue
-                if answer.kind != Kind.HYBRID:
+                if answer.kind != Kind.FINE:
                     continue
-                rpm = speed.update(answer)
+                # The board's velocity, or (a board without one) the positions' differences.
+                measured = speed.update(answer)
+                board_rpm = rpm_of(answer, board.bits)
+                rpm = measured if board_rpm is None else board_rpm
                 s = status.values
-                pos = answer.values["position"]
-                line = (f"\rposition {pos:>6} {angle_deg(answer, board.bits):8.3f} deg  {rpm:+9.2f} rpm  "
+                pos = answer.values["fine_position"] >> answer.values["fine_bits"]
+                line = (f"\rposition {pos:>6} {angle_deg(answer, board.bits):9.4f} deg  {rpm:+10.3f} rpm  "
                         f"{answer.mode_name:<11} {'valid' if answer.valid else 'NOT VALID':<9}  errors t1 "
                         f"{s['track1_errors']} t2 {s['track2_errors']} sync {s['sync_errors']} link "
                         f"{s['link_errors']}  crc {board.crc_errors}")
@@ -360,11 +391,19 @@ def cmd_plot(args, out: TextIO | None = None) -> None:
     column = "angle_deg" if rows[0]["angle_deg"] else ("count" if rows[0]["count"] else "track1")
     y = [float(r[column]) if r[column] != "" else math.nan for r in rows]
     valid = [r["valid"] == "1" for r in rows]
-    fig, ax = plt.subplots(figsize=(9, 4))
+    velocity = [float(r["velocity_rpm"]) if r.get("velocity_rpm") else math.nan for r in rows]
+    with_velocity = any(not math.isnan(v) for v in velocity)
+    if with_velocity:
+        fig, (ax, ax_v) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+        ax_v.plot(times, velocity, lw=0.8, color="tab:green", label="velocity")
+        ax_v.set_ylabel("velocity (rpm)")
+        ax_v.grid(alpha=0.3)
+    else:
+        fig, ax = plt.subplots(figsize=(9, 4))
     ax.plot(times, y, lw=0.8, color="tab:blue", label=column)
     ax.scatter([x for x, v in zip(times, valid) if not v], [yy for yy, v in zip(y, valid) if not v],
                s=8, color="tab:red", label="not valid", zorder=3)
-    ax.set_xlabel("board time (s)")
+    (ax_v if with_velocity else ax).set_xlabel("board time (s)")
     ax.set_ylabel(column.replace("_", " "))
     ax.set_title(f"{path.name}: {len(rows)} readings")
     ax.legend(loc="upper right")
@@ -392,7 +431,7 @@ def add_parser(sub) -> None:
     read.add_argument("--json", action="store_true", help="one JSON object instead of a sentence")
     read.set_defaults(func=cmd_read)
 
-    monitor = cmds.add_parser("monitor", help="a live line: position, angle, speed, mode, error counts")
+    monitor = cmds.add_parser("monitor", help="a live line: position, angle, speed (rpm), mode, error counts")
     link(monitor)
     monitor.add_argument("--rate", type=float, default=50.0, help="updates per second (default 50)")
     monitor.add_argument("--count", type=int, default=0, help="stop after this many updates (default: Ctrl-C)")

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from enum import IntEnum
 
 SOF = 0xA5
-VERSION = 1
+VERSION = 2
 REQUEST_MAX_LEN = 5  # prenc_host_link's parser limit
 ANSWER_MAX_LEN = 16
 HEADER_LEN = 6  # FLAGS, SEQ, TIME[4]
@@ -41,6 +41,7 @@ class Kind(IntEnum):
     INCREMENTAL = 2
     TRACKS = 3
     STATUS = 4
+    FINE = 5
 
 
 ANSWER_DATA = 0x80
@@ -49,7 +50,15 @@ NACK_CODES = {1: "unknown request type", 2: "bad length", 3: "unknown kind"}
 MODE_NAMES = {0: "ACQUIRE", 1: "NORMAL", 2: "REDUCED_1", 3: "REDUCED_2", 4: "INCREMENTAL"}
 
 # Data bytes after the header, per kind.
-DATA_LEN = {Kind.ABS: 2, Kind.HYBRID: 3, Kind.INCREMENTAL: 4, Kind.TRACKS: 5, Kind.STATUS: 10}
+DATA_LEN = {Kind.ABS: 2, Kind.HYBRID: 3, Kind.INCREMENTAL: 4, Kind.TRACKS: 5, Kind.STATUS: 10,
+            Kind.FINE: 10}
+VELOCITY_FRAC = 32  # FINE's velocity: quarters per clock x 2^32
+
+
+def velocity_rpm(velocity: int, clk_mhz: int, bits: int) -> float:
+    """FINE's velocity (quarters per clock x 2^32) in revolutions per minute, for a disc of
+    2^bits slots and the board's clock."""
+    return velocity / 2.0 ** VELOCITY_FRAC * clk_mhz * 1e6 * 60 / (4 << bits)
 
 
 def crc16(data: bytes) -> int:
@@ -215,6 +224,10 @@ def decode(frame: Frame) -> Answer | Nack:
     elif kind == Kind.TRACKS:
         t1, t2, tf = struct.unpack(">HHB", data)
         values = {"track1": t1, "track2": t2, "track1_valid": bool(tf & 1), "track2_valid": bool(tf & 2)}
+    elif kind == Kind.FINE:
+        fine, velocity, info, clk_mhz = struct.unpack(">IiBB", data)
+        values = {"fine_position": fine, "fine_bits": info & 0x0F, "velocity": velocity,
+                  "velocity_valid": bool(info & 0x10), "interpolated": bool(info & 0x20), "clk_mhz": clk_mhz}
     else:
         version, n, e1, e2, es, el = struct.unpack(">BBHHHH", data)
         values = {"version": version, "bits": n, "track1_errors": e1, "track2_errors": e2,
@@ -236,6 +249,9 @@ def encode_answer(answer: Answer) -> bytes:
         data = struct.pack(">i", v["count"])
     elif answer.kind == Kind.TRACKS:
         data = struct.pack(">HHB", v["track1"], v["track2"], v["track1_valid"] | (v["track2_valid"] << 1))
+    elif answer.kind == Kind.FINE:
+        info = v["fine_bits"] | (v["velocity_valid"] << 4) | (v["interpolated"] << 5)
+        data = struct.pack(">IiBB", v["fine_position"], v["velocity"], info, v["clk_mhz"])
     else:
         data = struct.pack(">BBHHHH", v["version"], v["bits"], v["track1_errors"], v["track2_errors"],
                            v["sync_errors"], v["link_errors"])

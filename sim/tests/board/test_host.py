@@ -31,8 +31,12 @@ class FakeBoard:
         self.thread.start()
 
     def _answer(self, kind: Kind, seq: int) -> bytes:
+        # FINE: a quarter of a turn and 1/64 of a quarter, at 600 rpm (N = 10, 30 MHz).
+        velocity = round(600 / 60 * 4096 / 30e6 * 2**32)
         values = {Kind.ABS: {"position": 256}, Kind.STATUS: {"version": self.version, "bits": 10, "track1_errors": 0,
-                                                            "track2_errors": 0, "sync_errors": 0, "link_errors": 0}}
+                                                            "track2_errors": 0, "sync_errors": 0, "link_errors": 0},
+                  Kind.FINE: {"fine_position": (1024 << 6) + 1, "fine_bits": 6, "velocity": velocity,
+                              "velocity_valid": True, "interpolated": True, "clk_mhz": 30}}
         return protocol.encode_answer(Answer(kind, True, 1, 1, False, seq, 1000 * seq, values[kind]))
 
     def _serve(self) -> None:
@@ -70,6 +74,13 @@ def board(request):
 def test_read_prints_the_answer(board, capsys):
     assert main(["host", "read", "--port", board.port, "--kind", "abs"]) == 0
     assert capsys.readouterr().out.startswith("abs 256 / 1024 = 90.000 deg  valid NORMAL cw")
+
+
+def test_read_fine_prints_the_angle_and_the_rpm(board, capsys):
+    assert main(["host", "read", "--port", board.port, "--kind", "fine"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith(f"fine {(1024 << 6) + 1} / {1 << 18} = {360 * ((1024 << 6) + 1) / (1 << 18):.4f} deg"), out
+    assert "+600.000 rpm" in out, out
 
 
 def test_a_missing_port_is_one_line(capsys):

@@ -27,10 +27,19 @@ def test_answers_round_trip(kind):
     values = {Kind.ABS: {"position": 1023}, Kind.HYBRID: {"position": 4095}, Kind.INCREMENTAL: {"count": -123456},
               Kind.TRACKS: {"track1": 5, "track2": 6, "track1_valid": True, "track2_valid": False},
               Kind.STATUS: {"version": 1, "bits": 10, "track1_errors": 1, "track2_errors": 2, "sync_errors": 3,
-                            "link_errors": 65535}}[kind]
+                            "link_errors": 65535},
+              Kind.FINE: {"fine_position": 0x3FFFF, "fine_bits": 6, "velocity": -641, "velocity_valid": True,
+                          "interpolated": False, "clk_mhz": 30}}[kind]
     answer = Answer(kind, True, 2, 1, False, 7, 123456789, values)
     frames = FrameParser().feed(protocol.encode_answer(answer))
     assert [protocol.decode(f) for f in frames] == [answer]
+
+
+def test_velocity_in_rpm():
+    # 600 rpm at N = 10, 30 MHz: 600 / 60 x 4096 quarters per second, over 30e6 clocks, x 2^32.
+    word = round(600 / 60 * 4096 / 30e6 * 2**32)
+    assert protocol.velocity_rpm(word, 30, 10) == pytest.approx(600, rel=1e-6)
+    assert protocol.velocity_rpm(-word, 30, 10) == pytest.approx(-600, rel=1e-6)
 
 
 @settings(max_examples=300, deadline=None)

@@ -103,6 +103,14 @@ def check_answer(record: dict, truth: Truth, bridge: Bridge) -> None:
     elif kind == "tracks":
         assert int(record["track1"]) in {h >> 2 for h in hyb} and int(record["track2"]) == int(record["track1"])
         assert record["track1_valid"] in (True, 1, "1") and record["track2_valid"] in (True, 1, "1")
+    elif kind == "fine":
+        # The quarter, extrapolated to the answer's clock: within a quarter of the latency's.
+        quarter = int(record["fine_position"]) >> int(record["fine_bits"])
+        near = {(h + d) % (4 << N) for h in hyb for d in (-1, 0, 1)}
+        assert quarter in near, (clock, record, sorted(hyb))
+        if record["velocity_rpm"] not in (None, ""):
+            true_rpm = CLK_HZ / SLOT_CLOCKS / (1 << N) * 60
+            assert abs(float(record["velocity_rpm"]) - true_rpm) < 0.001 * true_rpm, (record, true_rpm)
     else:
         assert (record["version"], record["bits"]) == (protocol.VERSION, N)
         assert record["track1_errors"] == record["track2_errors"] == record["sync_errors"] == 0
@@ -118,7 +126,7 @@ async def prenc_host_reads_the_true_position_through_a_pty(dut):
     await Timer((START_CLOCK + 40 * SLOT_CLOCKS) * PERIOD_NS, unit="ns")
     assert int(dut.pos_valid.value) == 1 and int(dut.mode.value) == 1
 
-    for kind in ("abs", "hybrid", "incremental", "tracks", "status"):
+    for kind in ("abs", "hybrid", "incremental", "tracks", "status", "fine"):
         result = await host(bridge, "read", *link_args(bridge), "--kind", kind, "--json")
         assert result.returncode == 0, result.stderr
         record = json.loads(result.stdout)
@@ -158,6 +166,17 @@ async def prenc_host_reads_the_true_position_through_a_pty(dut):
 
     result = await host(bridge, "plot", str(log), "--out", str(out / "log.png"))
     assert result.returncode == 0 and (out / "log.png").stat().st_size > 10_000, result.stderr
+    # The fine kind: a log with the board's velocity, and its plot (a velocity panel).
+    fine_log = out / "fine.csv"
+    result = await host(bridge, "log", *link_args(bridge), "--out", str(fine_log), "--kind", "fine",
+                        "--rate", "2000", "--count", "20")
+    assert result.returncode == 0, result.stderr
+    rows = list(csv.DictReader(fine_log.open()))
+    assert len(rows) == 20 and all(r["velocity_valid"] == "1" for r in rows), rows[:2]
+    for row in rows:
+        check_answer(row, truth, bridge)
+    result = await host(bridge, "plot", str(fine_log), "--out", str(out / "fine.png"))
+    assert result.returncode == 0 and (out / "fine.png").stat().st_size > 10_000, result.stderr
     os.close(bridge.slave)
 
 

@@ -44,7 +44,8 @@ class Link:
                   "track1_pos": r.randrange(1 << n), "track1_valid": r.randrange(2),
                   "track2_pos": r.randrange(1 << n), "track2_valid": r.randrange(2),
                   "track1_errors": r.randrange(1 << 16), "track2_errors": r.randrange(1 << 16),
-                  "sync_errors": r.randrange(1 << 16)}
+                  "sync_errors": r.randrange(1 << 16), "fine_pos": r.randrange(1 << 32),
+                  "velocity": r.randrange(1 << 32), "fine_info": r.randrange(64)}
         for name, value in values.items():
             getattr(self.dut, name).value = value
         return values
@@ -65,7 +66,7 @@ class Link:
         return await self.answer()
 
 
-def expected_values(kind: Kind, v: dict, n: int, link_errors: int) -> dict:
+def expected_values(kind: Kind, v: dict, n: int, link_errors: int, clk_mhz: int = 0) -> dict:
     if kind == Kind.ABS:
         return {"position": v["pos_abs"]}
     if kind == Kind.HYBRID:
@@ -76,6 +77,10 @@ def expected_values(kind: Kind, v: dict, n: int, link_errors: int) -> dict:
     if kind == Kind.TRACKS:
         return {"track1": v["track1_pos"], "track2": v["track2_pos"], "track1_valid": bool(v["track1_valid"]),
                 "track2_valid": bool(v["track2_valid"])}
+    if kind == Kind.FINE:
+        w, info = v["velocity"], v["fine_info"]
+        return {"fine_position": v["fine_pos"], "fine_bits": info & 15, "velocity": w - (1 << 32) if w >> 31 else w,
+                "velocity_valid": bool(info & 16), "interpolated": bool(info & 32), "clk_mhz": clk_mhz}
     return {"version": protocol.VERSION, "bits": n, "track1_errors": v["track1_errors"],
             "track2_errors": v["track2_errors"], "sync_errors": v["sync_errors"], "link_errors": link_errors}
 
@@ -104,7 +109,7 @@ async def every_kind_on_demand(dut):
             v = link.drive(r)
             answer = await link.ask(protocol.read_request(kind))
             assert isinstance(answer, Answer) and answer.kind == kind, answer
-            assert answer.values == expected_values(kind, v, link.n, 0), (kind, answer.values, v)
+            assert answer.values == expected_values(kind, v, link.n, 0, link.clks_per_us), (kind, answer.values, v)
             check_flags(answer, v, streaming=False)
             assert answer.seq == seq
             seq += 1
