@@ -343,11 +343,12 @@ def main() -> int:
           f"{r['valid_clocks'] / r['clocks']:.1%}, {time.perf_counter() - t0:.0f} s")
 
     print("\n6. Host link: answers per second of board time, streaming back to back (48 MHz clock)")
-    print(f"   {'baud':>9} " + " ".join(f"{k:>16}" for k in ("ABS", "HYBRID", "INCREMENTAL", "TRACKS", "STATUS")))
+    kinds = ("ABS", "HYBRID", "INCREMENTAL", "TRACKS", "STATUS", "FINE")
+    print(f"   {'baud':>9} " + " ".join(f"{k:>16}" for k in kinds))
     for baud in (115_200, 1_000_000, 3_000_000):
         r = link_rate(48_000_000, baud)
         cells = []
-        for kind in ("ABS", "HYBRID", "INCREMENTAL", "TRACKS", "STATUS"):
+        for kind in kinds:
             limit = baud / 10 / r[kind]["frame_bytes"]
             cells.append(f"{r[kind]['per_second']:>8,.0f} ({r[kind]['per_second'] / limit:.3f})")
         print(f"   {baud:>9} " + " ".join(f"{c:>16}" for c in cells))
