@@ -218,39 +218,28 @@ module prenc_board #(
   wire [31:0]         velocity_word;
   wire [31:0]         fine_word = {{(32 - POS_BITS){1'b0}}, fine_pos};
 
-  generate
-    if (FINE == 1) begin : g_fine
-      prenc_fine #(
-        .N                (N),
-        .FINE_BITS        (F),
-        .LOOKAHEAD_HALVES (LOOKAHEAD),
-        .WINDOW           (VELOCITY_WINDOW)
-      ) u_fine (
-        .clk            (clk),
-        .rst            (rst),
-        .pos_hyb        (pos_hyb),
-        .pos_valid      (valid),
-        .step           (sync_step),
-        .step_cw        (direction),
-        .illegal        (sync_illegal),
-        .fine_pos       (fine_pos),
-        .fine_valid     (fine_valid),
-        .interpolated   (interpolated),
-        .velocity       (velocity),
-        .accel          (accel),
-        .velocity_valid (velocity_valid),
-        .velocity_word  (velocity_word)
-      );
-    end else begin : g_no_fine
-      assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
-      assign fine_valid     = valid;
-      assign interpolated   = 1'b0;
-      assign velocity       = 51'd0;
-      assign accel          = 50'd0;
-      assign velocity_valid = 1'b0;
-      assign velocity_word  = 32'd0;
-    end
-  endgenerate
+  prenc_fine #(
+    .N                (N),
+    .FINE_BITS        (F),
+    .LOOKAHEAD_HALVES (LOOKAHEAD),
+    .WINDOW           (VELOCITY_WINDOW),
+    .ENABLE           (FINE)
+  ) u_fine (
+    .clk            (clk),
+    .rst            (rst),
+    .pos_hyb        (pos_hyb),
+    .pos_valid      (valid),
+    .step           (sync_step),
+    .step_cw        (direction),
+    .illegal        (sync_illegal),
+    .fine_pos       (fine_pos),
+    .fine_valid     (fine_valid),
+    .interpolated   (interpolated),
+    .velocity       (velocity),
+    .accel          (accel),
+    .velocity_valid (velocity_valid),
+    .velocity_word  (velocity_word)
+  );
 
   wire [15:0] link_errors;
   wire        snapshot;

@@ -125,7 +125,7 @@ module prenc_wb #(
       prenc_wb_parameter_FINE_must_be_0_or_1 u_stop ();
     end
     if (N + 2 + FINE_BITS > 32 || (FINE == 0 && FINE_BITS != 0)) begin : g_bad_fine_bits
-      initial $display("ERROR: %m: parameter FINE_BITS = %0d: N + 2 + FINE_BITS <= 32, and 0 with FINE = 0",
+      initial $display("ERROR: %m: parameter FINE_BITS = %0d (N + 2 + it <= 32; 0 with FINE = 0)",
                        FINE_BITS);
       prenc_wb_parameter_FINE_BITS_out_of_range u_stop ();
     end
@@ -217,39 +217,28 @@ module prenc_wb #(
   wire         velocity_valid;
   wire [31:0]  velocity_word;  // quarters per clock x 2^32, saturated
 
-  generate
-    if (FINE == 1) begin : g_fine
-      prenc_fine #(
-        .N                (N),
-        .FINE_BITS        (FINE_BITS),
-        .LOOKAHEAD_HALVES (LOOKAHEAD),
-        .WINDOW           (VELOCITY_WINDOW)
-      ) u_fine (
-        .clk            (clk),
-        .rst            (rst),
-        .pos_hyb        (pos_hyb),
-        .pos_valid      (pos_valid),
-        .step           (sync_step),
-        .step_cw        (direction),
-        .illegal        (sync_illegal),
-        .fine_pos       (fine_pos),
-        .fine_valid     (fine_valid),
-        .interpolated   (interpolated),
-        .velocity       (velocity),
-        .accel          (accel),
-        .velocity_valid (velocity_valid),
-        .velocity_word  (velocity_word)
-      );
-    end else begin : g_no_fine
-      assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
-      assign fine_valid     = pos_valid;
-      assign interpolated   = 1'b0;
-      assign velocity       = 51'd0;
-      assign accel          = 50'd0;
-      assign velocity_valid = 1'b0;
-      assign velocity_word  = 32'd0;
-    end
-  endgenerate
+  prenc_fine #(
+    .N                (N),
+    .FINE_BITS        (FINE_BITS),
+    .LOOKAHEAD_HALVES (LOOKAHEAD),
+    .WINDOW           (VELOCITY_WINDOW),
+    .ENABLE           (FINE)
+  ) u_fine (
+    .clk            (clk),
+    .rst            (rst),
+    .pos_hyb        (pos_hyb),
+    .pos_valid      (pos_valid),
+    .step           (sync_step),
+    .step_cw        (direction),
+    .illegal        (sync_illegal),
+    .fine_pos       (fine_pos),
+    .fine_valid     (fine_valid),
+    .interpolated   (interpolated),
+    .velocity       (velocity),
+    .accel          (accel),
+    .velocity_valid (velocity_valid),
+    .velocity_word  (velocity_word)
+  );
 
   wire [7:0] status = {velocity_valid, track2_valid, track1_valid, direction, mode, pos_valid};
 
