@@ -102,8 +102,14 @@ module prenc_fine_position #(
   reg [W-1:0]          fine_pos_reg;     // stage C
   reg                  valid_reg;
   reg                  interpolated_reg;
-  reg signed [XB-1:0]  tree1_reg [0:3];  // velocity x LOOKAHEAD_HALVES: 4, 2, 1 partial sums
-  reg signed [XB-1:0]  tree2_reg [0:1];
+  // velocity x LOOKAHEAD_HALVES: 4, 2, then 1 partial sums (registers, not arrays: Yosys
+  // would read arrays as memories)
+  reg signed [XB-1:0]  tree1_0_reg;
+  reg signed [XB-1:0]  tree1_1_reg;
+  reg signed [XB-1:0]  tree1_2_reg;
+  reg signed [XB-1:0]  tree1_3_reg;
+  reg signed [XB-1:0]  tree2_0_reg;
+  reg signed [XB-1:0]  tree2_1_reg;
   reg signed [XB-1:0]  tree3_reg;
 
   // Stage A: the fraction of the quarter, clamped to it by its bits (edge + travel is
@@ -136,7 +142,6 @@ module prenc_fine_position #(
   // The quarters above pos_hyb's wrap.
   wire                 unused_ok   = &{1'b0, truncated[XB-1:W]};
 
-  integer k;
   always @(posedge clk) begin
     // Stage C.
     fine_pos_reg     <= base + fraction;
@@ -153,9 +158,13 @@ module prenc_fine_position #(
     valid_a_reg <= pos_valid;
     vv_a_reg    <= velocity_valid;
     // The tree.
-    for (k = 0; k < 4; k = k + 1) tree1_reg[k] <= partial[2 * k] + partial[2 * k + 1];
-    for (k = 0; k < 2; k = k + 1) tree2_reg[k] <= tree1_reg[2 * k] + tree1_reg[2 * k + 1];
-    tree3_reg <= tree2_reg[0] + tree2_reg[1];
+    tree1_0_reg <= partial[0] + partial[1];
+    tree1_1_reg <= partial[2] + partial[3];
+    tree1_2_reg <= partial[4] + partial[5];
+    tree1_3_reg <= partial[6] + partial[7];
+    tree2_0_reg <= tree1_0_reg + tree1_1_reg;
+    tree2_1_reg <= tree1_2_reg + tree1_3_reg;
+    tree3_reg   <= tree2_0_reg + tree2_1_reg;
     // The travel since pos_hyb's last step.
     if (step_d_reg[STEP_DELAY-1]) begin
       travel_reg <= {LB{1'b0}};
@@ -181,9 +190,13 @@ module prenc_fine_position #(
       fine_pos_reg     <= {W{1'b0}};
       valid_reg        <= 1'b0;
       interpolated_reg <= 1'b0;
-      for (k = 0; k < 4; k = k + 1) tree1_reg[k] <= {XB{1'b0}};
-      for (k = 0; k < 2; k = k + 1) tree2_reg[k] <= {XB{1'b0}};
-      tree3_reg <= {XB{1'b0}};
+      tree1_0_reg      <= {XB{1'b0}};
+      tree1_1_reg      <= {XB{1'b0}};
+      tree1_2_reg      <= {XB{1'b0}};
+      tree1_3_reg      <= {XB{1'b0}};
+      tree2_0_reg      <= {XB{1'b0}};
+      tree2_1_reg      <= {XB{1'b0}};
+      tree3_reg        <= {XB{1'b0}};
     end
   end
 

@@ -64,12 +64,13 @@ def test_the_core_places_on_the_up5k_in_its_few_pin_harness():
 def test_the_harness_keeps_all_of_the_core():
     """Folding the outputs must keep every output observable: a harness that dropped
     outputs would let Yosys remove the logic behind them (the error counters alone are
-    16 registers each). At N = 10 the harness has its fold's 49 registers (36, 9, 3 and
-    1) and all but one of the core's 416 (Yosys finds one redundant), and at least the
-    core's LUTs (ABC merges the first fold stage into the logic before it)."""
+    16 registers each). At N = 10 the fold has 36, 9, 3 and 1 registers that are not
+    constant, and Yosys finds a few of the core's redundant beside them (the core alone:
+    455, the harness: 502), and at least the core's LUTs (ABC merges the first fold stage
+    into the logic before it)."""
     core_ff, core_lut = ffs_luts("prenc_core")
     harness_ff, harness_lut = ffs_luts("prenc_core_harness")
-    assert harness_ff >= core_ff + 48, (core_ff, harness_ff)
+    assert harness_ff >= core_ff + 46, (core_ff, harness_ff)
     assert harness_lut >= core_lut, (core_lut, harness_lut)
 
 
@@ -92,10 +93,13 @@ def test_the_core_without_hypotheses_leaves_their_logic_out(top):
     """HYPOTHESES = 0 (no hypotheses after a missed quadrature state) is for boards that
     need a smaller core: synthesis must drop the hypothesis logic (about a fifth of the
     core's LUTs and of its flip-flops: docs/architecture.md, "What the logic pays for"),
-    set on the core or on a wrapper, which passes it on."""
+    set on the core or on a wrapper, which passes it on. The wrappers are measured without
+    prenc_fine (FINE = 0): ABC's mapping of its 4,000 cells moves their LUT count by
+    more than the difference measured here."""
     _, core_lut = ffs_luts("prenc_core")
-    ff, lut = ffs_luts(top)
-    ff0, lut0 = ffs_luts(top, HYPOTHESES=0)
+    without_fine = {} if top == "prenc_core" else {"FINE": 0}
+    ff, lut = ffs_luts(top, **without_fine)
+    ff0, lut0 = ffs_luts(top, HYPOTHESES=0, **without_fine)
     assert lut - lut0 > 0.15 * core_lut, (core_lut, lut, lut0)
     assert ff0 < ff - 40, (ff, ff0)
 

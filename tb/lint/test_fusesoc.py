@@ -220,6 +220,8 @@ def test_the_core_synthesizes(library, core, target, cell):
     name = core.replace(":", "_") + "_0.1.0"
     log = (library / build / name / f"{target}-yosys" / "yosys.log").read_text()
     luts = [int(n) for n in re.findall(rf"^\s+(\d+)\s+(?:cells\s+)?{cell}\s*$", log, re.M)]
-    assert luts and 300 < luts[-1] < 3000, f"{cell} count not found or implausible: {luts}"
+    # The bus carries prenc_fine (about 4,000 iCE40 cells, docs/fine.md) beside the core.
+    limit = 3000 if core == "prenc:reader:core" else 8000
+    assert luts and 300 < luts[-1] < limit, f"{cell} count not found or implausible: {luts}"
     statistics = log.rsplit("Printing statistics", 1)[-1]
     assert "DLATCH" not in statistics.upper() and "Latch inferred" not in log

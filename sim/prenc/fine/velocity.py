@@ -150,7 +150,6 @@ class Velocity:
         self.n2 = 0
         self.p2 = 0
         self.state = self.IDLE
-        self.closing = 0        # the MEAN under way closes a window
         self.sign = 1           # the direction of the windows
         self.v01 = 0
         self.cross = 0          # n1 P2, then compared with n2 P1
