@@ -241,7 +241,7 @@ class Velocity:
             self.sign = self.sign * _sign(self.d)    # the sign of the acceleration
             self.state = self.FIT_A
         elif state == self.FIT_A and div_done:
-            accel = saturate(self.sign * quotient, ACCEL_BITS)
+            accel = self.sign * quotient   # QUOTIENT_BITS < ACCEL_BITS: it always fits
             self._multiply((self.p1 >> 1) + self.full_clocks, accel, self.timer_bits + 1, self.FIT_MUL)
         elif state == self.FIT_MUL and mul_done:
             # sign: the acceleration's; the windows' direction is the last step's.

@@ -31,7 +31,7 @@ per cent of the true speed.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -58,16 +58,6 @@ PRINTED = Printing(edge_error=0.05, phase_deg=10, duty_a=0.45, duty_b=0.55, ecce
 def rpm(value: float) -> float:
     """Slots per second at `value` rpm (N = 10)."""
     return value / 60.0 * (1 << N)
-
-
-@dataclass
-class Scenario:
-    name: str
-    trajectory: Trajectory
-    measure_from: int           # first clock measured (after the estimators settled)
-    stop_clock: int | None = None  # where the disc stops (the stop scenario)
-    printing: Printing | None = None
-    extra: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -99,7 +89,7 @@ def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N) -> Syn
     cw[d:] = (move[:-d] >= 0)
     # pos_hyb: the sync track's hybrid position, counted from the first sample.
     seen0 = theta[0] if printing is None else printing.seen(theta[:1], disc.length)[0]
-    h0 = 4 * int(math.floor(seen0)) + int(q[0] - (4 * math.floor(seen0) % 4)) % 4
+    h0 = 4 * int(math.floor(seen0)) + int(q[0])
     h = h0 + np.cumsum(move)
     pos = np.full(len(theta), h0, dtype=np.int64)
     pos[d + POSITION_DELAY:] = h[:-(d + POSITION_DELAY)]

@@ -60,10 +60,6 @@ class Printing:
         if not 0 <= self.eccentricity <= 0.3:
             raise ValueError(f"eccentricity = {self.eccentricity!r} is out of range 0..0.3 slot")
 
-    @property
-    def ideal(self) -> bool:
-        return self == Printing(seed=self.seed)
-
     def edges(self, length: int) -> dict[str, np.ndarray]:
         """Each slot's four edges, in slots past the slot's start: a_rise, a_fall,
         b_rise, b_fall (b_fall belongs to the B interval that rises in the slot)."""

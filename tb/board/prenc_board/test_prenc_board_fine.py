@@ -15,7 +15,6 @@ trajectory, never from the RTL.
 from __future__ import annotations
 
 import math
-import os
 
 import cocotb
 import numpy as np
@@ -85,10 +84,6 @@ async def biss_frames_carry_the_angle_at_the_masters_request(dut):
                       extrapolate, stretch, len(e), *results[stretch][:1], 1 / results[stretch][0],
                       results[stretch][1], results[stretch][2])
         assert len(e) >= 40
-    if os.environ.get("BENCH_OUT"):
-        import json
-        with open(os.environ["BENCH_OUT"], "w") as f:
-            json.dump(results, f)
     fast_rms = results["6000 rpm"][0]
     if extrapolate:
         for stretch, (rms, worst, _) in results.items():

@@ -23,7 +23,7 @@ import cocotb
 
 from common import clock_and_check, rng, start_clock_and_reset
 from prenc.fine.fine_position import FinePosition
-from prenc.fine.velocity import Velocity
+from prenc.fine.velocity import ACCEL_BITS, VELOCITY_BITS, Velocity
 from prenc.virtual.fine_bench import sync_stream
 from prenc.virtual.trajectory import Trajectory
 from runner import SIMULATORS, run
@@ -65,10 +65,6 @@ def stimulus(seed: int) -> tuple[dict[str, np.ndarray], int]:
             "illegal": illegal}, total
 
 
-def signed(value: int, bits: int) -> int:
-    return value - (1 << bits) if value >> (bits - 1) else value
-
-
 @cocotb.test()
 async def matches_the_models_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_FINE_SEED", rng().randrange(1 << 30)))  # replay a draw
@@ -88,7 +84,8 @@ async def matches_the_models_clock_by_clock(dut):
         seen[vel.state] += 1
         stops += int(before != 0 and vel.velocity == 0)
         holds += vel.held
-        expected = {"velocity": vel.velocity & ((1 << 51) - 1), "accel": vel.accel & ((1 << 50) - 1),
+        expected = {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
+                    "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
                     "velocity_valid": vel.valid, "fine_pos": fine.fine_pos, "fine_valid": fine.valid,
                     "interpolated": fine.interpolated}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
