@@ -10,4 +10,8 @@ campaigns that the tests and benchmarks run, and the plain reader they compare w
     goals         the availability goals of issue 15, scenario by scenario
     campaign      long seeded fault campaigns
     plain_reader  the plain verifying reader (drop all on any disagreement)
+    printing      a printed disc's imperfections (edges, phase, duty, eccentricity)
+    fine_bench    the fine position and velocity against the truth, beside baselines
+    edge_timing   a printed disc's true edges, and a steady run's crossings of them
+    cal_bench     self-calibration against the truth
 """
