@@ -21,6 +21,12 @@ valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 - Without a valid velocity: the fraction is the quarter's middle, nothing extrapolated,
   and `interpolated` is 0.
 
+With a calibration table (issue 38), `c_lo` and `c_hi` are the corrections of
+pos_hyb's quarter's edges: the fraction starts at the crossed edge's true place and is
+clamped to the quarter's true span [c_lo, 1 + c_hi), so the fine position leaves the
+verified quarter by at most the table's largest correction (plus the extrapolation).
+They are 0 without a table, which is all the RTL has yet.
+
 Three register stages, so that no two long carry chains follow each other: (A) the
 fraction clamped (by its bits: it lies in (-2, 3) quarters), with pos_hyb and the
 flags; (B) the fraction plus the extrapolation; (C) the output. The extrapolation,
@@ -60,31 +66,36 @@ class FinePosition:
         self.travel = 0
         self.cw = 1
         self.tree = [0] * TREE_DELAY                 # velocity x LOOKAHEAD_HALVES, in flight
-        self.a = (0, 0, 0, 0)                        # stage A: fraction, pos_hyb, valid, velocity_valid
-        self.b = (0, 0, 0, 0)                        # stage B: fraction + extrapolation, ...
+        self.a = (0, 0, 0, 0, 1 << (FRAC - 1))       # stage A: fraction, pos_hyb, valid,
+                                                     # velocity_valid, the quarter's middle
+        self.b = (0, 0, 0, 0, 1 << (FRAC - 1))       # stage B: fraction + extrapolation, ...
         self.fine_pos = 0
         self.valid = 0
         self.interpolated = 0
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
-              velocity_valid: int, rst: int = 0) -> None:
+              velocity_valid: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0) -> None:
+        """c_lo, c_hi: with a calibration table, the corrections of pos_hyb's quarter's
+        lower and upper edge (FRAC bits): the quarter really spans
+        [pos_hyb + c_lo, pos_hyb + 1 + c_hi)."""
         if rst:
             self.reset()
             return
         f = self.fine_bits
         mask = (1 << self.width) - 1
         # Stage C: the output.
-        sum_b, pos_b, valid_b, vv_b = self.b
-        fraction = (sum_b >> (FRAC - f)) if vv_b else ((1 << f) >> 1)
+        sum_b, pos_b, valid_b, vv_b, mid_b = self.b
+        fraction = (sum_b if vv_b else mid_b) >> (FRAC - f)
         self.fine_pos = ((pos_b << f) + fraction) & mask
         self.valid, self.interpolated = valid_b, int(valid_b and vv_b)
         # Stage B: the fraction and the extrapolation.
-        frac_a, pos_a, valid_a, vv_a = self.a
-        self.b = (frac_a + (self.tree[-1] >> 1), pos_a, valid_a, vv_a)
+        frac_a, pos_a, valid_a, vv_a, mid_a = self.a
+        self.b = (frac_a + (self.tree[-1] >> 1), pos_a, valid_a, vv_a, mid_a)
         # Stage A: the fraction clamped to the quarter.
-        edge = 0 if self.cw else 1 << FRAC
-        frac = max(0, min((1 << FRAC) - 1, edge + self.travel))
-        self.a = (frac, pos_hyb, pos_valid, velocity_valid)
+        top = (1 << FRAC) + c_hi
+        edge = c_lo if self.cw else top
+        frac = max(c_lo, min(top - 1, edge + self.travel))
+        self.a = (frac, pos_hyb, pos_valid, velocity_valid, (c_lo + top) >> 1)
         self.tree = [velocity * self.lookahead_halves] + self.tree[:-1]
         if self.step_d[-1]:
             self.travel, self.cw = 0, self.cw_d[-1]

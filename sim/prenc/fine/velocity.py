@@ -38,13 +38,20 @@ The estimator, on the quadrature decoder's registered step:
   it there, acceleration kept, for the reversal that should follow; a step the same
   way instead means the acceleration was wrong (it is dropped, the means restart);
   no step for 4 times as long as it took to reach 0 is a stop.
-- Overdue: once the velocity predicts 1.5 quarters of travel since the last step and
-  no step came, the disc is slower than estimated: accel becomes -3 v / E (E the
+- Overdue: once the velocity predicts 1.5 quarters of travel since the last step (with
+  a calibration table: half a quarter past the quarter's true width) and no step came, the disc is slower than estimated: accel becomes -3 v / E (E the
   clocks since the step), which brings the velocity to 0 at 2 predicted quarter
   periods, and that is a stop. No step for 2^TIMER_BITS - 1 clocks: a stop too. A
   stop reads 0 (valid).
 - An illegal transition (a missed state) drops the velocity: `valid` 0 until the next
   estimate.
+
+With a calibration table (cal_bits = 12; issue 38, docs/calibration.md), a window's
+length is the distance between its edges' true places, in 2^-12 quarters: n + c(end)
+- c(start) clockwise, from the corrections `c_lo` and `c_hi` of the decoder's
+quarter's edges. The arithmetic is the same with 12 more bits in the products (a fit
+takes 24 clocks longer). The RTL does not have this yet: with cal_bits = 0, the
+default, the model is what rtl/fine/prenc_velocity.v does, clock for clock.
 
 One serial divider (a quotient bit per clock) and one serial multiplier (a bit of the
 multiplier per clock) do the arithmetic, so an update takes FULL_CLOCKS; a step that
@@ -64,11 +71,11 @@ OVERDUE = 3 << (FRAC - 1)  # 1.5 quarters
 DIV_CLOCKS = QUOTIENT_BITS + 2   # from a division's start cycle to its done cycle
 
 
-def full_clocks(timer_bits: int) -> int:
+def full_clocks(timer_bits: int, cal_bits: int = 0) -> int:
     """Cycles from a window's closing step to the cycle the fitted velocity shows: two
-    products of COUNT_BITS bits, the test, three divisions, the difference, a product of
-    TIMER_BITS + 1 bits, the sum."""
-    return 2 * COUNT_BITS + 3 * DIV_CLOCKS + timer_bits + 8
+    products of COUNT_BITS + cal_bits bits, the test, three divisions, the difference, a
+    product of TIMER_BITS + 1 bits, the sum."""
+    return 2 * (COUNT_BITS + cal_bits) + 3 * DIV_CLOCKS + timer_bits + 8
 
 
 def saturate(value: int, bits: int) -> int:
@@ -116,15 +123,19 @@ class Velocity:
     (IDLE, MEAN, CROSS1, CROSS2, DECIDE, CONSTANT, FIT_V01, FIT_V12, FIT_D, FIT_A, FIT_MUL,
      FIT_LOAD, DECAY) = range(13)
 
-    def __init__(self, window: int = 2048, timer_bits: int = 26):
+    def __init__(self, window: int = 2048, timer_bits: int = 26, cal_bits: int = 0):
         if not 12 <= timer_bits <= 32:
             raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
         if not 16 <= window < (1 << (timer_bits - 1)):
             raise ValueError(f"window = {window} is out of range 16..2^(timer_bits-1)-1")
+        if cal_bits not in (0, 12):
+            raise ValueError(f"cal_bits = {cal_bits}: 0 (no calibration table) or 12")
         self.window = window
         self.timer_bits = timer_bits
+        self.cal_bits = cal_bits
+        self.mul_bits = COUNT_BITS + cal_bits
         self.timer_max = (1 << timer_bits) - 1
-        self.full_clocks = full_clocks(timer_bits)
+        self.full_clocks = full_clocks(timer_bits, cal_bits)
         self.reset()
 
     def reset(self) -> None:
@@ -141,6 +152,7 @@ class Velocity:
         self.lead = 0           # predicted travel since the last step, FRAC bits
         self.have_a = 0         # anchor A: the step that opened the current window
         self.x_a = 0
+        self.c_a = 0            # the correction of A's edge (calibration table)
         self.since_a = 0
         self.have_prev = 0      # the window before: its quarters and clocks
         self.prev_n = 0
@@ -169,7 +181,13 @@ class Velocity:
         self.multiplier, self.multiplicand, self.mul_left = multiplier, multiplicand, bits
         self.product, self.state = 0, state
 
-    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0) -> None:
+    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0,
+              c_lo: int = 0, c_hi: int = 0) -> None:
+        """c_lo, c_hi: with a calibration table (cal_bits = 12), the corrections of the
+        edges of the quarter the decoder is in (after this cycle's step), in 2^-cal_bits
+        quarters: the quarter really spans [c_lo, 1 + c_hi) past its nominal start. A
+        clockwise step crossed its lower edge, a counter-clockwise one its upper edge."""
+        step_c = c_lo if step_cw else c_hi
         if rst:
             self.reset()
             return
@@ -211,7 +229,7 @@ class Velocity:
             self.state = self.IDLE
         elif state == self.CROSS1 and mul_done:
             self.cross = self.product
-            self._multiply(self.n2, self.p1, COUNT_BITS, self.CROSS2)
+            self._multiply(self.n2, self.p1, self.mul_bits, self.CROSS2)
         elif state == self.CROSS2 and mul_done:
             self.diff = self.cross - self.product
             self.state = self.DECIDE
@@ -221,17 +239,17 @@ class Velocity:
             same = int(diff < 0) == self.last_negative and self.last_fit
             self.last_negative, self.last_fit = int(diff < 0), int(not constant)
             if constant or not same:
-                start, num, den = 1, (self.n1 + self.n2) << FRAC, self.p1 + self.p2
+                start, num, den = 1, (self.n1 + self.n2) << (FRAC - self.cal_bits), self.p1 + self.p2
                 self.state = self.CONSTANT
             else:
-                start, num, den = 1, self.n1 << FRAC, self.p1
+                start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
                 self.state = self.FIT_V01
         elif state == self.CONSTANT and div_done:
             v_n, self.accel, self.valid = self.sign * quotient, 0, 1
             self.state = self.IDLE
         elif state == self.FIT_V01 and div_done:
             self.v01 = quotient
-            start, num, den = 1, self.n2 << FRAC, self.p2
+            start, num, den = 1, self.n2 << (FRAC - self.cal_bits), self.p2
             self.state = self.FIT_V12
         elif state == self.FIT_V12 and div_done:
             self.d = self.v01 - quotient
@@ -258,8 +276,10 @@ class Velocity:
             self.accel = -self.sign * quotient
             self.state = self.IDLE
 
+        # Overdue: 1.5 quarters, or half a quarter past the quarter's true width.
+        overdue = OVERDUE + ((c_hi - c_lo) << (FRAC - self.cal_bits))
         if idle and not self.decaying and not step and not illegal and velocity != 0 \
-                and abs(self.lead) >= OVERDUE:
+                and abs(self.lead) >= overdue:
             # Overdue: decay to 0 over a third of the time since the step.
             self.sign = _sign(velocity)
             start, num, den = 1, 3 * abs(velocity), self.since_step
@@ -294,6 +314,9 @@ class Velocity:
                 if self.state == self.DECAY:
                     cancel, start, self.state = 1, 0, self.IDLE
             n = abs(((x - self.x_a + (1 << (COUNT_BITS - 1))) & mask) - (1 << (COUNT_BITS - 1)))
+            # The window's length in 2^-cal_bits quarters: its edges' true places (the
+            # table's corrections; step_c is the crossed edge's), at least one LSB.
+            n_cal = max(1, (n << self.cal_bits) + (step_c - self.c_a if step_cw else self.c_a - step_c))
             speed = abs(velocity)   # as the cycle began (one carry chain less in the RTL)
             if reversal:
                 # The same edge crossed back at the speed it was crossed at; accel and the
@@ -302,25 +325,25 @@ class Velocity:
                 v_n = speed if step_cw else -speed
                 self.have_prev = 0
                 self.last_negative ^= 1
-                self.have_a, self.x_a, since_a_n = 1, x, 1
+                self.have_a, self.x_a, self.c_a, since_a_n = 1, x, step_c, 1
                 cancel, start, self.state = 1, 0, self.IDLE
             elif not self.have_a or self.since_a == self.timer_max:
                 self.have_prev = self.last_fit = 0
-                self.have_a, self.x_a, since_a_n = 1, x, 1
+                self.have_a, self.x_a, self.c_a, since_a_n = 1, x, step_c, 1
             elif idle:
                 closes = (n & 3) == 0 and self.since_a >= self.window
                 self.sign = 1 if step_cw else -1
                 if closes and self.have_prev:
-                    self.n1, self.p1, self.n2, self.p2 = n, self.since_a, self.prev_n, self.prev_clocks
-                    self._multiply(n, self.prev_clocks, COUNT_BITS, self.CROSS1)
+                    self.n1, self.p1, self.n2, self.p2 = n_cal, self.since_a, self.prev_n, self.prev_clocks
+                    self._multiply(n_cal, self.prev_clocks, self.mul_bits, self.CROSS1)
                 elif (closes or not self.have_prev) and accel0 == 0 and not held0:
                     # The mean since A, unless an acceleration is known (after a reversal):
                     # then the velocity integrates it until a fit.
-                    start, num, den, cancel = 1, n << FRAC, self.since_a, 0
+                    start, num, den, cancel = 1, n_cal << (FRAC - self.cal_bits), self.since_a, 0
                     self.state = self.MEAN
                 if closes:
-                    self.have_prev, self.prev_n, self.prev_clocks = 1, n, self.since_a
-                    self.x_a, since_a_n = x, 1
+                    self.have_prev, self.prev_n, self.prev_clocks = 1, n_cal, self.since_a
+                    self.x_a, self.c_a, since_a_n = x, step_c, 1
             self.step_speed = speed
 
         self.div.clock(start, num, den, cancel)
