@@ -39,10 +39,10 @@ The estimator, on the quadrature decoder's registered step:
   way instead means the acceleration was wrong (it is dropped, the means restart);
   no step for 4 times as long as it took to reach 0 is a stop.
 - Overdue: once the velocity predicts 1.5 quarters of travel since the last step (with
-  a calibration table: half a quarter past the quarter's true width) and no step came, the disc is slower than estimated: accel becomes -3 v / E (E the
-  clocks since the step), which brings the velocity to 0 at 2 predicted quarter
-  periods, and that is a stop. No step for 2^TIMER_BITS - 1 clocks: a stop too. A
-  stop reads 0 (valid).
+  a calibration table: half a quarter past the quarter's true width) and no step came,
+  the disc is slower than estimated: accel becomes -3 v / E (E the clocks since the
+  step), which brings the velocity to 0 at 2 predicted quarter periods, and that is a
+  stop. No step for 2^TIMER_BITS - 1 clocks: a stop too. A stop reads 0 (valid).
 - An illegal transition (a missed state) drops the velocity: `valid` 0 until the next
   estimate.
 
