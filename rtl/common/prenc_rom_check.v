@@ -15,9 +15,14 @@
 //   DEPTH  words the file must supply, 1..2^24
 //   WIDTH  bits per word, 1..64
 
+// Guarded: more than one block's file list names it (the converter's, the calibration
+// table's), and a top's list may include both.
+
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
+`ifndef PRENC_ROM_CHECK_V
+`define PRENC_ROM_CHECK_V
 
 module prenc_rom_check #(
   parameter         NAME  = "ROM_FILE",
@@ -58,4 +63,5 @@ module prenc_rom_check #(
 
 endmodule
 
+`endif  // PRENC_ROM_CHECK_V
 `resetall

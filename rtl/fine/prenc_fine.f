@@ -2,4 +2,6 @@
 // Sources of prenc_fine (verilator -F <this file>), relative to this folder.
 -F prenc_velocity.f
 -F prenc_fine_position.f
+-F ../cal/prenc_cal_lookup.f
+-F ../cal/prenc_decoder_quarter.f
 prenc_fine.v

@@ -8,15 +8,32 @@
 // pos_valid, but for the extrapolation over the pipeline (LOOKAHEAD_HALVES), which can
 // carry it past the quarter's edge by |velocity| * LOOKAHEAD_HALVES / 2 quarters.
 //
+// With CAL = 1, the calibration table (rtl/cal/prenc_cal_lookup.v, docs/calibration.md)
+// gives both blocks the true places of their quarters' edges:
+// - the decoder's quarter, pos_hyb plus the steps pos_hyb does not show yet (this
+//   cycle's and the three before: pos_hyb follows the decoder by 4 clocks), goes to
+//   the table, which gives c[q] and c[q + 1] one clock later;
+// - so prenc_velocity takes the decoder's step, direction and illegal transition one
+//   clock late, with those corrections, and prenc_fine_position takes them 3 clocks
+//   later again, when pos_hyb shows that quarter;
+// - the corrections count only while the table holds both words and pos_valid held
+//   when the quarter was asked (else 0: the nominal edges).
+// Model: prenc.fine.fine.Fine.
+//
 // Parameters
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
 //   WINDOW, TIMER_BITS               prenc_velocity's (2048, 26)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
+//   CAL        1: with the calibration table (N 2..16); 0: without (default)
+//   CAL_FILE   with CAL = 1: the table's file ($readmemh, prenc.cal.table's format);
+//              "" : all zero until written
 //
 // Ports: as prenc_velocity's and prenc_fine_position's, and
 //   velocity_word   the velocity in quarters per clock x 2^32, signed, saturated to 32 bits
 //                   (the Wishbone register's and the host link's unit)
+//   cal_write, cal_address, cal_data   with CAL = 1: a word of the table written (c[x],
+//                   two's complement, 2^-12 quarter); it counts from the next clock
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -27,7 +44,9 @@ module prenc_fine #(
   parameter integer LOOKAHEAD_HALVES = 0,
   parameter integer WINDOW           = 2048,
   parameter integer TIMER_BITS       = 26,
-  parameter integer ENABLE           = 1
+  parameter integer ENABLE           = 1,
+  parameter integer CAL              = 0,
+  parameter         CAL_FILE         = ""
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -36,6 +55,9 @@ module prenc_fine #(
   input  wire                   step,
   input  wire                   step_cw,
   input  wire                   illegal,
+  input  wire                   cal_write,
+  input  wire [N+1:0]           cal_address,
+  input  wire [15:0]            cal_data,
   output wire [N+FINE_BITS+1:0] fine_pos,
   output wire                   fine_valid,
   output wire                   interpolated,
@@ -59,19 +81,127 @@ module prenc_fine #(
       initial $display("ERROR: %m: parameter FINE_BITS = %0d needs ENABLE = 1", FINE_BITS);
       prenc_fine_parameter_FINE_BITS_needs_ENABLE_1 u_stop ();
     end
+    if (CAL != 0 && CAL != 1) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
+      prenc_fine_parameter_CAL_must_be_0_or_1 u_stop ();
+    end
+    if (CAL == 1 && ENABLE == 0) begin : g_bad_cal_enable
+      initial $display("ERROR: %m: parameter CAL = 1 needs ENABLE = 1");
+      prenc_fine_parameter_CAL_needs_ENABLE_1 u_stop ();
+    end
   endgenerate
 
   generate
     if (ENABLE == 1) begin : g_fine
+      // The velocity's inputs, and the corrections of the velocity's and the fine
+      // position's quarters (without CAL: the decoder's outputs as they are, and 0).
+      wire        v_step;
+      wire        v_step_cw;
+      wire        v_illegal;
+      wire [15:0] v_c_lo;
+      wire [15:0] v_c_hi;
+      wire [15:0] f_c_lo;
+      wire [15:0] f_c_hi;
+
+      if (CAL == 1) begin : g_cal
+        reg          late_step_reg;      // the decoder's outputs, one clock late
+        reg          late_cw_reg;
+        reg          late_illegal_reg;
+        reg          late_valid_reg;
+        reg  [15:0]  pos_lo_0_reg;       // the corrections on their way to the fine
+        reg  [15:0]  pos_hi_0_reg;       // position (registers, not arrays: Yosys would
+        reg  [15:0]  pos_lo_1_reg;       // read arrays as memories)
+        reg  [15:0]  pos_hi_1_reg;
+        reg  [15:0]  pos_lo_2_reg;
+        reg  [15:0]  pos_hi_2_reg;
+        wire [N+1:0] quarter;
+
+        prenc_decoder_quarter #(
+          .N (N)
+        ) u_quarter (
+          .clk     (clk),
+          .rst     (rst),
+          .pos_hyb (pos_hyb),
+          .step    (step),
+          .step_cw (step_cw),
+          .quarter (quarter)
+        );
+
+        wire [15:0]  c_lo;
+        wire [15:0]  c_hi;
+        wire         c_ok;
+        wire         used = c_ok & late_valid_reg;
+
+        prenc_cal_lookup #(
+          .N        (N),
+          .CAL_FILE (CAL_FILE)
+        ) u_lookup (
+          .clk     (clk),
+          .rst     (rst),
+          .quarter (quarter),
+          .write   (cal_write),
+          .address (cal_address),
+          .data    (cal_data),
+          .c_lo    (c_lo),
+          .c_hi    (c_hi),
+          .ok      (c_ok)
+        );
+
+        always @(posedge clk) begin
+          late_step_reg    <= step;
+          late_cw_reg      <= step_cw;
+          late_illegal_reg <= illegal;
+          late_valid_reg   <= pos_valid;
+          pos_lo_0_reg     <= v_c_lo;
+          pos_hi_0_reg     <= v_c_hi;
+          pos_lo_1_reg     <= pos_lo_0_reg;
+          pos_hi_1_reg     <= pos_hi_0_reg;
+          pos_lo_2_reg     <= pos_lo_1_reg;
+          pos_hi_2_reg     <= pos_hi_1_reg;
+          if (rst) begin
+            late_step_reg    <= 1'b0;
+            late_cw_reg      <= 1'b1;
+            late_illegal_reg <= 1'b0;
+            late_valid_reg   <= 1'b0;
+            pos_lo_0_reg     <= 16'd0;
+            pos_hi_0_reg     <= 16'd0;
+            pos_lo_1_reg     <= 16'd0;
+            pos_hi_1_reg     <= 16'd0;
+            pos_lo_2_reg     <= 16'd0;
+            pos_hi_2_reg     <= 16'd0;
+          end
+        end
+
+        assign v_step    = late_step_reg;
+        assign v_step_cw = late_cw_reg;
+        assign v_illegal = late_illegal_reg;
+        assign v_c_lo    = used ? c_lo : 16'd0;
+        assign v_c_hi    = used ? c_hi : 16'd0;
+        assign f_c_lo    = pos_lo_2_reg;
+        assign f_c_hi    = pos_hi_2_reg;
+      end else begin : g_nominal
+        assign v_step    = step;
+        assign v_step_cw = step_cw;
+        assign v_illegal = illegal;
+        assign v_c_lo    = 16'd0;
+        assign v_c_hi    = 16'd0;
+        assign f_c_lo    = 16'd0;
+        assign f_c_hi    = 16'd0;
+        wire unused_cal = &{1'b0, cal_write, cal_address, cal_data};
+      end
+
       prenc_velocity #(
         .WINDOW     (WINDOW),
-        .TIMER_BITS (TIMER_BITS)
+        .TIMER_BITS (TIMER_BITS),
+        .CAL        (CAL)
       ) u_velocity (
         .clk      (clk),
         .rst      (rst),
-        .step     (step),
-        .step_cw  (step_cw),
-        .illegal  (illegal),
+        .step     (v_step),
+        .step_cw  (v_step_cw),
+        .illegal  (v_illegal),
+        .c_lo     (v_c_lo),
+        .c_hi     (v_c_hi),
         .velocity (velocity),
         .accel    (accel),
         .valid    (velocity_valid)
@@ -80,7 +210,8 @@ module prenc_fine #(
       prenc_fine_position #(
         .N                (N),
         .FINE_BITS        (FINE_BITS),
-        .LOOKAHEAD_HALVES (LOOKAHEAD_HALVES)
+        .LOOKAHEAD_HALVES (LOOKAHEAD_HALVES),
+        .CAL              (CAL)
       ) u_fine_position (
         .clk            (clk),
         .rst            (rst),
@@ -90,6 +221,8 @@ module prenc_fine #(
         .step_cw        (step_cw),
         .velocity       (velocity),
         .velocity_valid (velocity_valid),
+        .c_lo           (f_c_lo),
+        .c_hi           (f_c_hi),
         .fine_pos       (fine_pos),
         .fine_valid     (fine_valid),
         .interpolated   (interpolated)
@@ -101,7 +234,8 @@ module prenc_fine #(
       assign fine_pos       = pos_hyb;  // FINE_BITS = 0 (checked above)
       assign fine_valid     = pos_valid;
       assign interpolated   = 1'b0;
-      wire unused_none = &{1'b0, clk, rst, step, step_cw, illegal};
+      wire unused_none = &{1'b0, clk, rst, step, step_cw, illegal, cal_write, cal_address,
+                           cal_data};
     end
   endgenerate
 

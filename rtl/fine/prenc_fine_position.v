@@ -22,18 +22,26 @@
 // flags, (B) plus the extrapolation, (C) the output, OUTPUT_DELAY = 3 clocks after
 // pos_hyb. The extrapolation velocity x LOOKAHEAD_HALVES comes from a registered adder
 // tree of three levels (the velocity of three clocks before).
+// - With CAL = 1 (a calibration table, docs/calibration.md): c_lo and c_hi are the
+//   corrections of pos_hyb's quarter's edges, in 2^-12 quarters, so the quarter really
+//   spans [c_lo, 1 + c_hi): the fraction starts at the crossed edge's true place and is
+//   clamped to that span (and the fine position leaves the verified quarter by at most
+//   the table's largest correction, plus the extrapolation). With CAL = 0 they are
+//   not used.
 // Model: prenc.fine.fine_position.FinePosition.
 //
 // Parameters
 //   N                 code word length, 2..24 (pos_hyb is N + 2 bits)
 //   FINE_BITS         F, the fraction's bits, 0..8
 //   LOOKAHEAD_HALVES  half clocks of extrapolation, 0..255 (0: off)
+//   CAL               1: the quarter's span from the calibration table; 0: nominal
 //
 // Ports
 //   pos_hyb, pos_valid   prenc_core's
 //   step, step_cw        the quadrature decoder's registered step (prenc_core's
 //                        sync_step and direction)
 //   velocity, velocity_valid   prenc_velocity's
+//   c_lo, c_hi           with CAL = 1: the corrections of pos_hyb's quarter's edges
 //   fine_pos             N + 2 + F bits: quarters and their fraction
 //   fine_valid           pos_valid, aligned with fine_pos
 //   interpolated         fine_valid, with a valid velocity (else the fraction is fixed)
@@ -44,7 +52,8 @@
 module prenc_fine_position #(
   parameter integer N                = 10,
   parameter integer FINE_BITS        = 8,
-  parameter integer LOOKAHEAD_HALVES = 0
+  parameter integer LOOKAHEAD_HALVES = 0,
+  parameter integer CAL              = 0
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -54,6 +63,8 @@ module prenc_fine_position #(
   input  wire                   step_cw,
   input  wire [50:0]            velocity,
   input  wire                   velocity_valid,
+  input  wire [15:0]            c_lo,
+  input  wire [15:0]            c_hi,
   output wire [N+FINE_BITS+1:0] fine_pos,
   output wire                   fine_valid,
   output wire                   interpolated
@@ -73,6 +84,10 @@ module prenc_fine_position #(
                        LOOKAHEAD_HALVES);
       prenc_fine_position_parameter_LOOKAHEAD_HALVES_out_of_range_0_to_255 u_stop ();
     end
+    if (CAL != 0 && CAL != 1) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
+      prenc_fine_position_parameter_CAL_must_be_0_or_1 u_stop ();
+    end
   endgenerate
 
   localparam integer FRAC = 48;
@@ -91,7 +106,8 @@ module prenc_fine_position #(
   reg [STEP_DELAY-1:0] cw_d_reg;
   reg signed [LB-1:0]  travel_reg;
   reg                  cw_reg;
-  reg [FRAC-1:0]       frac_a_reg;       // stage A
+  reg signed [LB:0]    frac_a_reg;       // stage A
+  reg signed [LB:0]    mid_a_reg;        // the quarter's middle
   reg [N+1:0]          pos_a_reg;
   reg                  valid_a_reg;
   reg                  vv_a_reg;
@@ -99,6 +115,7 @@ module prenc_fine_position #(
   reg [N+1:0]          pos_b_reg;
   reg                  valid_b_reg;
   reg                  vv_b_reg;
+  reg signed [LB:0]    mid_b_reg;
   reg [W-1:0]          fine_pos_reg;     // stage C
   reg                  valid_reg;
   reg                  interpolated_reg;
@@ -112,14 +129,36 @@ module prenc_fine_position #(
   reg signed [XB-1:0]  tree2_1_reg;
   reg signed [XB-1:0]  tree3_reg;
 
-  // Stage A: the fraction of the quarter, clamped to it by its bits (edge + travel is
-  // in (-2, 3) quarters: negative, or 1 and above, or in the quarter).
-  wire signed [LB:0]   edge_travel = (cw_reg ? {(LB + 1){1'b0}} : ONE) +
+  // Stage A: the fraction of the quarter, from the crossed edge, clamped to the
+  // quarter's span [c_lo, 1 + c_hi) (without CAL: [0, 1)).
+  wire [15:0]          c_lo_used   = (CAL == 1) ? c_lo : 16'd0;
+  wire [15:0]          c_hi_used   = (CAL == 1) ? c_hi : 16'd0;
+  wire signed [LB:0]   lo_edge     = $signed({{(LB + 1 - 16){c_lo_used[15]}}, c_lo_used}) <<<
+                                     (FRAC - 12);
+  wire signed [LB:0]   hi_edge     = ONE + ($signed({{(LB + 1 - 16){c_hi_used[15]}}, c_hi_used})
+                                            <<< (FRAC - 12));
+  wire signed [LB:0]   edge_travel = (cw_reg ? lo_edge : hi_edge) +
                                      {travel_reg[LB-1], travel_reg};
-  wire                 above       = !edge_travel[LB] &&
-                                     (edge_travel[LB-1:FRAC] != {(LB - FRAC){1'b0}});
-  wire [FRAC-1:0]      clamped     = edge_travel[LB] ? {FRAC{1'b0}} :
-                                     above ? {FRAC{1'b1}} : edge_travel[FRAC-1:0];
+  wire signed [LB:0]   middle_a    = (lo_edge + hi_edge) >>> 1;
+  reg signed [LB:0]    clamped;
+  generate
+    if (CAL == 1) begin : g_cal_clamp
+      always @(*) begin
+        if (edge_travel < lo_edge) clamped = lo_edge;
+        else if (edge_travel >= hi_edge) clamped = hi_edge - 1'b1;
+        else clamped = edge_travel;
+      end
+    end else begin : g_clamp
+      // By its bits: edge + travel is in (-2, 3) quarters: negative, 1 and above, or in
+      // the quarter.
+      wire above = !edge_travel[LB] && (edge_travel[LB-1:FRAC] != {(LB - FRAC){1'b0}});
+      always @(*) begin
+        clamped = {(LB + 1){1'b0}};
+        clamped[FRAC-1:0] = edge_travel[LB] ? {FRAC{1'b0}} :
+                            above ? {FRAC{1'b1}} : edge_travel[FRAC-1:0];
+      end
+    end
+  endgenerate
   // The extrapolation's partial products, velocity << i for each bit i of the lookahead.
   wire signed [XB-1:0] v_wide      = {{(XB - 51){velocity[50]}}, velocity};
   wire signed [XB-1:0] partial [0:7];
@@ -130,9 +169,11 @@ module prenc_fine_position #(
     end
   endgenerate
   // Stage B: the fraction plus the extrapolation. Stage C: the output.
-  wire signed [XB-1:0] frac_wide   = {{(XB - FRAC){1'b0}}, frac_a_reg};
+  wire signed [XB-1:0] frac_wide   = {{(XB - LB - 1){frac_a_reg[LB]}}, frac_a_reg};
   wire signed [XB-1:0] truncated   = sum_b_reg >>> (FRAC - F);
-  wire [W-1:0]         fraction    = vv_b_reg ? truncated[W-1:0] : MIDDLE;
+  wire signed [LB:0]   mid_trunc   = mid_b_reg >>> (FRAC - F);
+  wire [W-1:0]         fraction    = vv_b_reg ? truncated[W-1:0] :
+                                     (CAL == 1) ? mid_trunc[W-1:0] : MIDDLE;
   wire [W-1:0]         base        = {pos_b_reg, {F{1'b0}}};
   wire signed [LB-1:0] travel_sum  = travel_reg + {{(LB - 51){velocity[50]}}, velocity};
   // |travel_sum| < 2 quarters, by its bits.
@@ -140,7 +181,7 @@ module prenc_fine_position #(
                                      ((travel_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
                                       (travel_sum[FRAC:0] != {(FRAC + 1){1'b0}}));
   // The quarters above pos_hyb's wrap.
-  wire                 unused_ok   = &{1'b0, truncated[XB-1:W]};
+  wire                 unused_ok   = &{1'b0, truncated[XB-1:W], mid_trunc[LB:W]};
 
   always @(posedge clk) begin
     // Stage C.
@@ -152,8 +193,10 @@ module prenc_fine_position #(
     pos_b_reg   <= pos_a_reg;
     valid_b_reg <= valid_a_reg;
     vv_b_reg    <= vv_a_reg;
+    mid_b_reg   <= mid_a_reg;
     // Stage A.
     frac_a_reg  <= clamped;
+    mid_a_reg   <= middle_a;
     pos_a_reg   <= pos_hyb;
     valid_a_reg <= pos_valid;
     vv_a_reg    <= velocity_valid;
@@ -179,7 +222,9 @@ module prenc_fine_position #(
       cw_d_reg         <= {STEP_DELAY{1'b1}};
       travel_reg       <= {LB{1'b0}};
       cw_reg           <= 1'b1;
-      frac_a_reg       <= {FRAC{1'b0}};
+      frac_a_reg       <= {(LB + 1){1'b0}};
+      mid_a_reg        <= ONE >>> 1;
+      mid_b_reg        <= ONE >>> 1;
       pos_a_reg        <= {(N + 2){1'b0}};
       valid_a_reg      <= 1'b0;
       vv_a_reg         <= 1'b0;

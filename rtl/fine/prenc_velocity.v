@@ -25,6 +25,13 @@
 //   step for 2^TIMER_BITS - 1 clocks: a stop as well. A stop reads 0 (valid).
 // - An illegal transition drops the velocity (`valid` 0) until the next estimate.
 //
+// - With CAL = 1 (a calibration table, docs/calibration.md): c_lo and c_hi are the
+//   corrections of the edges of the decoder's quarter (after this cycle's step), in
+//   2^-12 quarters: a window's length is the distance between its edges' true places,
+//   n + c(end) - c(start) clockwise, in 2^-12 quarters (the products 12 bits wider: a
+//   fit takes 24 clocks longer); overdue is half a quarter past the quarter's true
+//   width (1 to 1.875 quarters). With CAL = 0 they are not used.
+//
 // One serial divider (prenc_divider) and a serial multiplier do the arithmetic: an
 // update takes FULL_CLOCKS; a step that comes while they are busy updates nothing.
 // Model: prenc.fine.velocity.Velocity, which this equals clock for clock.
@@ -32,10 +39,12 @@
 // Parameters
 //   WINDOW       shortest window in clocks, 16..2^(TIMER_BITS-1)-1 (2048: 68 us at 30 MHz)
 //   TIMER_BITS   width of the clocks counted, 12..32 (26: 2.2 s at 30 MHz)
+//   CAL          1: window lengths from the calibration table's corrections; 0: nominal
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs (prenc_core's
 //                            sync_step, direction, sync_illegal)
+//   c_lo, c_hi   with CAL = 1: the corrections of the decoder's quarter's edges
 //   velocity     quarters per clock, signed, FRAC fractional bits
 //   accel        quarters per clock per clock, signed, FRAC fractional bits
 //   valid        the velocity is an estimate (0 after reset and an illegal transition)
@@ -45,13 +54,16 @@
 
 module prenc_velocity #(
   parameter integer WINDOW     = 2048,
-  parameter integer TIMER_BITS = 26
+  parameter integer TIMER_BITS = 26,
+  parameter integer CAL        = 0
 ) (
   input  wire        clk,
   input  wire        rst,
   input  wire        step,
   input  wire        step_cw,
   input  wire        illegal,
+  input  wire [15:0] c_lo,
+  input  wire [15:0] c_hi,
   output wire [50:0] velocity,
   output wire [49:0] accel,
   output wire        valid
@@ -67,6 +79,10 @@ module prenc_velocity #(
                        WINDOW);
       prenc_velocity_parameter_WINDOW_out_of_range u_stop ();
     end
+    if (CAL != 0 && CAL != 1) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
+      prenc_velocity_parameter_CAL_must_be_0_or_1 u_stop ();
+    end
   endgenerate
 
   localparam integer FRAC  = 48;
@@ -75,14 +91,16 @@ module prenc_velocity #(
   localparam integer AB    = FRAC + 2;            // accel
   localparam integer CB    = 16;                  // edge count
   localparam integer TB    = TIMER_BITS;
-  localparam integer MB    = ((CB > TB + 1) ? CB : TB + 1) + 1;   // multiplier (a spare bit)
+  localparam integer CALB  = (CAL == 1) ? 12 : 0; // fractional bits of a window's length
+  localparam integer MCB   = CB + CALB;           // a window's length
+  localparam integer MB    = ((MCB > TB + 1) ? MCB : TB + 1) + 1;   // multiplier (a spare bit)
   localparam integer PB    = TB + 1 + AB;         // product
   localparam integer LB    = FRAC + 4;            // lead (and its sum)
   localparam integer NB    = 66;                  // numerator (65 used)
   localparam integer DB    = TB + 1;              // denominator
-  localparam integer XB    = CB + TB + 1;         // n1 P2 - n2 P1
+  localparam integer XB    = MCB + TB + 1;        // n1 P2 - n2 P1
   localparam integer DIV_CLOCKS  = QB + 2;
-  localparam integer FULL_CLOCKS = 2 * CB + 3 * DIV_CLOCKS + TB + 8;
+  localparam integer FULL_CLOCKS = 2 * MCB + 3 * DIV_CLOCKS + TB + 8;
 
   localparam [3:0] S_IDLE = 4'd0, S_MEAN = 4'd1, S_CROSS1 = 4'd2, S_CROSS2 = 4'd3, S_DECIDE = 4'd4,
                    S_CONSTANT = 4'd5, S_FIT_V01 = 4'd6, S_FIT_V12 = 4'd7, S_FIT_D = 4'd8,
@@ -106,20 +124,21 @@ module prenc_velocity #(
   reg signed [LB-1:0] lead_reg;
   reg have_a_reg;
   reg [CB-1:0] x_a_reg;
+  reg [15:0] c_a_reg;
   reg [TB-1:0] since_a_reg;
   reg have_prev_reg;
-  reg [CB-1:0] prev_n_reg;
+  reg [MCB-1:0] prev_n_reg;
   reg [TB-1:0] prev_clocks_reg;
-  reg [CB-1:0] n1_reg;
+  reg [MCB-1:0] n1_reg;
   reg [TB-1:0] p1_reg;
-  reg [CB-1:0] n2_reg;
+  reg [MCB-1:0] n2_reg;
   reg [TB-1:0] p2_reg;
   reg [3:0] state_reg;
   reg negative_reg;
   reg [QB-1:0] v01_reg;
   reg [XB-2:0] cross_reg;
   reg signed [XB-1:0] diff_reg;
-  reg [CB:0] n_less_reg;
+  reg [MCB:0] n_less_reg;
   reg [TB:0] p_sum_reg;
   reg signed [QB:0] d_reg;
   reg signed [PB:0] v_fit_reg;
@@ -143,20 +162,21 @@ module prenc_velocity #(
   reg signed [LB-1:0] lead_n;
   reg have_a_n;
   reg [CB-1:0] x_a_n;
+  reg [15:0] c_a_n;
   reg [TB-1:0] since_a_n;
   reg have_prev_n;
-  reg [CB-1:0] prev_n_n;
+  reg [MCB-1:0] prev_n_n;
   reg [TB-1:0] prev_clocks_n;
-  reg [CB-1:0] n1_n;
+  reg [MCB-1:0] n1_n;
   reg [TB-1:0] p1_n;
-  reg [CB-1:0] n2_n;
+  reg [MCB-1:0] n2_n;
   reg [TB-1:0] p2_n;
   reg [3:0] state_n;
   reg negative_n;
   reg [QB-1:0] v01_n;
   reg [XB-2:0] cross_n;
   reg signed [XB-1:0] diff_n;
-  reg [CB:0] n_less_n;
+  reg [MCB:0] n_less_n;
   reg [TB:0] p_sum_n;
   reg signed [QB:0] d_n;
   reg signed [PB:0] v_fit_n;
@@ -214,7 +234,17 @@ module prenc_velocity #(
   wire                 lead_sum_in = (lead_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b0}}) ||
                                      ((lead_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
                                       (lead_sum[FRAC:0] != {(FRAC + 1){1'b0}}));
-  wire                 overdue = (lead_reg >= OVERDUE) || (lead_reg <= -OVERDUE);
+  // With CAL: the corrections (else 0), the quarter's true width past one quarter
+  // (clamped to -1/2..3/8), and the lead at which an edge is overdue.
+  wire [15:0]          c_lo_used = (CAL == 1) ? c_lo : 16'd0;
+  wire [15:0]          c_hi_used = (CAL == 1) ? c_hi : 16'd0;
+  wire signed [16:0]   width_diff = $signed({c_hi_used[15], c_hi_used}) -
+                                    $signed({c_lo_used[15], c_lo_used});
+  wire signed [16:0]   extra = (width_diff < -17'sd2048) ? -17'sd2048 :
+                               (width_diff > 17'sd1536) ? 17'sd1536 : width_diff;
+  wire signed [LB-1:0] overdue_level = OVERDUE +
+                                       ({{(LB - 17){extra[16]}}, extra} <<< (FRAC - CALB));
+  wire                 overdue = (lead_reg >= overdue_level) || (lead_reg <= -overdue_level);
   wire                 timeout = (since_step_reg == TIMER_MAX);
   wire                 idle = (state_reg == S_IDLE);
   wire                 mul_done = (mul_left_reg == 6'd0);
@@ -226,12 +256,12 @@ module prenc_velocity #(
                                       (mul_bit ? {{(PB - AB){multiplicand_reg[AB-1]}},
                                                   multiplicand_reg}
                                                : {PB{1'b0}});
-  // (Both products have CB + TB bits: the difference fits XB.)
+  // (Both products have MCB + TB bits: the difference fits XB.)
   wire signed [XB-1:0] diff = {1'b0, cross_reg} - {1'b0, product_reg[XB-2:0]};
-  wire [CB:0]          n_sum = {1'b0, n1_reg} + {1'b0, n2_reg};
+  wire [MCB:0]         n_sum = {1'b0, n1_reg} + {1'b0, n2_reg};
   // |diff| < n1 + n2 by two sums' signs (n_less = n1 + n2 - 1, P1 + P2: registered
   // while the products run): diff + n_less >= 0 and n_less - diff >= 0.
-  wire [XB-1:0]        n_less_wide = {{(XB - CB - 1){1'b0}}, n_less_reg};
+  wire [XB-1:0]        n_less_wide = {{(XB - MCB - 1){1'b0}}, n_less_reg};
   wire [XB-1:0]        above_low  = diff_reg + n_less_wide;
   wire [XB-1:0]        below_high = n_less_wide - diff_reg;
   wire                 constant = !above_low[XB-1] && !below_high[XB-1];
@@ -254,7 +284,7 @@ module prenc_velocity #(
   wire signed [VB-1:0] v_quotient = negative_reg ? -{{(VB - QB){1'b0}}, quotient}
                                                  : {{(VB - QB){1'b0}}, quotient};
   // The multiplier's operands, zero-extended to its width (then loaded left-aligned).
-  wire [MB-1:0]        n2_wide = {{(MB - CB){1'b0}}, n2_reg};
+  wire [MB-1:0]        n2_wide = {{(MB - MCB){1'b0}}, n2_reg};
   wire [TB:0]          fit_value = {1'b0, p1_reg[TB-1:1]} + FULL_CLOCKS[TB:0];
   wire [MB-1:0]        fit_multiplier = {{(MB - TB - 1){1'b0}}, fit_value};
   // The step: the edge crossed and how far it is from anchor A.
@@ -262,7 +292,17 @@ module prenc_velocity #(
   wire [CB-1:0]        x_diff = x - x_a_reg;
   wire [CB-1:0]        n = x_diff[CB-1] ? -x_diff : x_diff;
   wire                 reversal = moved_reg && (step_cw != cw_reg);
-  wire [MB-1:0]        n_wide = {{(MB - CB){1'b0}}, n};
+  // The window's length in 2^-CALB quarters, between its edges' true places (step_c:
+  // the crossed edge's correction; c_a_reg: A's), at least one LSB.
+  wire [15:0]          step_c = step_cw ? c_lo_used : c_hi_used;
+  wire signed [16:0]   step_c_wide = $signed({step_c[15], step_c});
+  wire signed [16:0]   c_a_wide = $signed({c_a_reg[15], c_a_reg});
+  wire signed [16:0]   c_diff = step_cw ? step_c_wide - c_a_wide : c_a_wide - step_c_wide;
+  wire signed [MCB+1:0] n_cal_sum = ($signed({{(CALB + 2){1'b0}}, n}) <<< CALB) +
+                                    {{(MCB + 2 - 17){c_diff[16]}}, c_diff};
+  wire                 n_cal_low = n_cal_sum[MCB+1] || (n_cal_sum == {(MCB + 2){1'b0}});
+  wire [MCB-1:0]       n_cal = n_cal_low ? {{(MCB - 1){1'b0}}, 1'b1} : n_cal_sum[MCB-1:0];
+  wire [MB-1:0]        n_wide = {{(MB - MCB){1'b0}}, n_cal};
   wire                 closes = (n[1:0] == 2'b00) &&
                                 (since_a_reg >= WINDOW[TB-1:0]);
 
@@ -282,6 +322,7 @@ module prenc_velocity #(
     lead_n = lead_reg;
     have_a_n = have_a_reg;
     x_a_n = x_a_reg;
+    c_a_n = c_a_reg;
     since_a_n = since_a_reg;
     have_prev_n = have_prev_reg;
     prev_n_n = prev_n_reg;
@@ -337,9 +378,9 @@ module prenc_velocity #(
         cross_n = product_reg[XB-2:0];
         n_less_n = n_sum - 1'b1;
         p_sum_n = {1'b0, p1_reg} + {1'b0, p2_reg};
-        multiplier_n = n2_wide << (MB - CB);
+        multiplier_n = n2_wide << (MB - MCB);
         multiplicand_n = {{(AB - TB){1'b0}}, p1_reg};
-        mul_left_n = CB[5:0];
+        mul_left_n = MCB[5:0];
         product_n = {PB{1'b0}};
         state_n = S_CROSS2;
       end
@@ -352,11 +393,12 @@ module prenc_velocity #(
         last_fit_n = !constant;
         div_start = 1'b1;
         if (constant || !same) begin
-          div_num = {{(NB - CB - 1 - FRAC){1'b0}}, n_less_reg + 1'b1, {FRAC{1'b0}}};
+          div_num = {{(NB - MCB - 1 - FRAC + CALB){1'b0}}, n_less_reg + 1'b1,
+                     {(FRAC - CALB){1'b0}}};
           div_den = p_sum_reg;
           state_n = S_CONSTANT;
         end else begin
-          div_num = {{(NB - CB - FRAC){1'b0}}, n1_reg, {FRAC{1'b0}}};
+          div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n1_reg, {(FRAC - CALB){1'b0}}};
           div_den = {1'b0, p1_reg};
           state_n = S_FIT_V01;
         end
@@ -364,7 +406,7 @@ module prenc_velocity #(
       S_FIT_V01: if (div_done) begin
         v01_n = quotient;
         div_start = 1'b1;
-        div_num = {{(NB - CB - FRAC){1'b0}}, n2_reg, {FRAC{1'b0}}};
+        div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n2_reg, {(FRAC - CALB){1'b0}}};
         div_den = {1'b0, p2_reg};
         state_n = S_FIT_V12;
       end
@@ -487,6 +529,7 @@ module prenc_velocity #(
         last_negative_n = !last_negative_reg;  // accel goes on; the speed's trend turns
         have_a_n = 1'b1;
         x_a_n = x;
+        c_a_n = step_c;
         since_a_n = {{(TB - 1){1'b0}}, 1'b1};
         div_cancel = 1'b1;
         div_start = 1'b0;
@@ -496,17 +539,18 @@ module prenc_velocity #(
         last_fit_n = 1'b0;
         have_a_n = 1'b1;
         x_a_n = x;
+        c_a_n = step_c;
         since_a_n = {{(TB - 1){1'b0}}, 1'b1};
       end else if (idle) begin
         negative_n = !step_cw;
         if (closes && have_prev_n) begin  // _n: a hold let go just now clears it
-          n1_n = n;
+          n1_n = n_cal;
           p1_n = since_a_reg;
           n2_n = prev_n_reg;
           p2_n = prev_clocks_reg;
-          multiplier_n = n_wide << (MB - CB);
+          multiplier_n = n_wide << (MB - MCB);
           multiplicand_n = {{(AB - TB){1'b0}}, prev_clocks_reg};
-          mul_left_n = CB[5:0];
+          mul_left_n = MCB[5:0];
           product_n = {PB{1'b0}};
           state_n = S_CROSS1;
         end else if ((closes || !have_prev_n) && accel_reg == {AB{1'b0}} && !held_reg) begin
@@ -514,15 +558,16 @@ module prenc_velocity #(
           // the velocity integrates it until a fit.
           div_start = 1'b1;
           div_cancel = 1'b0;  // a stop in this cycle does not cancel the new mean
-          div_num = {{(NB - CB - FRAC){1'b0}}, n, {FRAC{1'b0}}};
+          div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n_cal, {(FRAC - CALB){1'b0}}};
           div_den = {1'b0, since_a_reg};
           state_n = S_MEAN;
         end
         if (closes) begin
           have_prev_n = 1'b1;
-          prev_n_n = n;
+          prev_n_n = n_cal;
           prev_clocks_n = since_a_reg;
           x_a_n = x;
+          c_a_n = step_c;
           since_a_n = {{(TB - 1){1'b0}}, 1'b1};
         end
       end
@@ -546,20 +591,21 @@ module prenc_velocity #(
       lead_reg <= {LB{1'b0}};
       have_a_reg <= 1'b0;
       x_a_reg <= {CB{1'b0}};
+      c_a_reg <= 16'd0;
       since_a_reg <= {TB{1'b0}};
       have_prev_reg <= 1'b0;
-      prev_n_reg <= {CB{1'b0}};
+      prev_n_reg <= {MCB{1'b0}};
       prev_clocks_reg <= {TB{1'b0}};
-      n1_reg <= {CB{1'b0}};
+      n1_reg <= {MCB{1'b0}};
       p1_reg <= {TB{1'b0}};
-      n2_reg <= {CB{1'b0}};
+      n2_reg <= {MCB{1'b0}};
       p2_reg <= {TB{1'b0}};
       state_reg <= S_IDLE;
       negative_reg <= 1'b0;
       v01_reg <= {QB{1'b0}};
       cross_reg <= {(XB - 1){1'b0}};
       diff_reg <= {XB{1'b0}};
-      n_less_reg <= {(CB + 1){1'b0}};
+      n_less_reg <= {(MCB + 1){1'b0}};
       p_sum_reg <= {(TB + 1){1'b0}};
       d_reg <= {(QB + 1){1'b0}};
       v_fit_reg <= {(PB + 1){1'b0}};
@@ -584,6 +630,7 @@ module prenc_velocity #(
       lead_reg <= lead_n;
       have_a_reg <= have_a_n;
       x_a_reg <= x_a_n;
+      c_a_reg <= c_a_n;
       since_a_reg <= since_a_n;
       have_prev_reg <= have_prev_n;
       prev_n_reg <= prev_n_n;

@@ -39,7 +39,8 @@ The estimator, on the quadrature decoder's registered step:
   way instead means the acceleration was wrong (it is dropped, the means restart);
   no step for 4 times as long as it took to reach 0 is a stop.
 - Overdue: once the velocity predicts 1.5 quarters of travel since the last step (with
-  a calibration table: half a quarter past the quarter's true width) and no step came,
+  a calibration table: half a quarter past the quarter's true width, 1 to 1.875
+  quarters) and no step came,
   the disc is slower than estimated: accel becomes -3 v / E (E the clocks since the
   step), which brings the velocity to 0 at 2 predicted quarter periods, and that is a
   stop. No step for 2^TIMER_BITS - 1 clocks: a stop too. A stop reads 0 (valid).
@@ -187,6 +188,8 @@ class Velocity:
         edges of the quarter the decoder is in (after this cycle's step), in 2^-cal_bits
         quarters: the quarter really spans [c_lo, 1 + c_hi) past its nominal start. A
         clockwise step crossed its lower edge, a counter-clockwise one its upper edge."""
+        if not self.cal_bits:
+            c_lo = c_hi = 0
         step_c = c_lo if step_cw else c_hi
         if rst:
             self.reset()
@@ -276,8 +279,11 @@ class Velocity:
             self.accel = -self.sign * quotient
             self.state = self.IDLE
 
-        # Overdue: 1.5 quarters, or half a quarter past the quarter's true width.
-        overdue = OVERDUE + ((c_hi - c_lo) << (FRAC - self.cal_bits))
+        # Overdue: 1.5 quarters, or half a quarter past the quarter's true width (from 1
+        # to 1.875 quarters: the lead saturates at 2).
+        extra = max(-(1 << (self.cal_bits - 1)), min(3 << (self.cal_bits - 3), c_hi - c_lo)) \
+            if self.cal_bits else 0
+        overdue = OVERDUE + (extra << (FRAC - self.cal_bits))
         if idle and not self.decaying and not step and not illegal and velocity != 0 \
                 and abs(self.lead) >= overdue:
             # Overdue: decay to 0 over a third of the time since the step.

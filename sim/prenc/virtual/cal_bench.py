@@ -8,9 +8,9 @@ position and the velocity, and how many turns it needs.
    edges (prenc.virtual.edge_timing.true_corrections, the same zero taken off), RMS and
    max, in slots.
 2. Applied: the scenarios of section 9 on the printed disc, through the models of
-   rtl/fine/ without and with the table (their inputs c_lo and c_hi: the corrections of the
-   edges of the decoder's quarter and of pos_hyb's quarter, which the board's table
-   block will give them). The table is the one a 10-turn run at
+   rtl/fine/ without and with the table (prenc.fine.fine.Fine with CAL = 1: the table
+   block prenc.cal.lookup gives prenc_velocity and prenc_fine_position the corrections of
+   their quarters' edges). The table is the one a 10-turn run at
    70 rpm with a +-2 % ripple at 100 Hz gives. The position error is against the true
    angle less the calibration's zero (the mean of the disc's edge errors, which no
    calibration of one disc can see; a user sets the zero at mounting); the zero is
@@ -22,9 +22,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..cal.calibrate import Result, calibrate
-from ..cal.table import FRAC as CAL_FRAC
-from ..fine.fine_position import FinePosition
-from ..fine.velocity import FRAC, Velocity
+from ..fine.fine import Fine
+from ..fine.velocity import FRAC
 from . import fine_bench as fb
 from .edge_timing import steady_record, true_corrections
 
@@ -65,33 +64,19 @@ def bench_table(c_true: np.ndarray) -> Result:
     return calibrate(record, CAL_TURNS)
 
 
-def decoder_quarter(sync: fb.Sync) -> np.ndarray:
-    """The quarter the decoder is in, clock by clock (after that clock's step): what
-    pos_hyb shows POSITION_DELAY clocks later."""
-    d = fb.POSITION_DELAY
-    return np.concatenate([sync.pos_hyb[d:], np.full(d, sync.pos_hyb[-1])])
-
-
 def run_calibrated(sync: fb.Sync, c: np.ndarray) -> dict[str, np.ndarray]:
-    """fine_bench.run_fine with the table c (in 2^-CAL_FRAC quarters)."""
-    vel = Velocity(window=fb.WINDOW, cal_bits=CAL_FRAC)
-    fine = FinePosition(n=N, fine_bits=fb.FINE_BITS, lookahead_halves=fb.LOOKAHEAD_HALVES)
-    quarters = 4 << N
-    shift = FRAC - CAL_FRAC
+    """fine_bench.run_fine through prenc_fine with CAL = 1 and the table c (in
+    2^-12 quarters): the model of the RTL, clock by clock."""
+    fine = Fine(n=N, fine_bits=fb.FINE_BITS, lookahead_halves=fb.LOOKAHEAD_HALVES,
+                window=fb.WINDOW, cal=1, table=c)
     total = len(sync.step)
-    dq = decoder_quarter(sync)
-    dec_lo, dec_hi = c[dq].tolist(), c[(dq + 1) % quarters].tolist()
-    pos = sync.pos_hyb.tolist()
-    lo = (c[sync.pos_hyb] << shift).tolist()
-    hi = (c[(sync.pos_hyb + 1) % quarters] << shift).tolist()
-    step, cw = sync.step.tolist(), sync.cw.tolist()
     v_out = np.zeros(total)
     fine_pos = np.zeros(total, dtype=np.int64)
+    step, cw, pos = sync.step.tolist(), sync.cw.tolist(), sync.pos_hyb.tolist()
     scale = 1.0 / (1 << FRAC)
     for k in range(total):
-        fine.clock(pos[k], 1, step[k], cw[k], vel.velocity, vel.valid, c_lo=lo[k], c_hi=hi[k])
-        vel.clock(step[k], cw[k], c_lo=dec_lo[k], c_hi=dec_hi[k])
-        v_out[k] = vel.velocity * scale
+        fine.clock(pos[k], 1, step[k], cw[k], 0)
+        v_out[k] = fine.velocity.velocity * scale
         fine_pos[k] = fine.fine_pos
     return {"velocity": v_out, "fine": fine_pos}
 

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
-"""prenc_fine (prenc_velocity, prenc_divider, prenc_fine_position) against the models.
+"""prenc_fine (prenc_velocity, prenc_divider, prenc_fine_position, and with CAL = 1
+prenc_cal_lookup) against the models.
 
-Expected values come from prenc.fine.velocity.Velocity and
-prenc.fine.fine_position.FinePosition, clock by clock. The stimulus is what the core
+Expected values come from prenc.fine.fine.Fine (prenc.fine.velocity.Velocity,
+prenc.fine.fine_position.FinePosition and prenc.cal.lookup.CalLookup), clock by clock. The stimulus is what the core
 gives the block on a disc that starts at rest, accelerates, turns, reverses smoothly
 and at once, wanders, stops longer than the velocity's time-out and starts again; a
 few illegal transitions (missed states) and stretches without pos_valid are mixed in.
@@ -10,7 +11,9 @@ Each run draws its stimulus; PRENC_FINE_SEED=<seed> replays the draw a failure n
 A small WINDOW and TIMER_BITS make every step of the sequencer (the mean, the
 constant-speed test, the fit, the decay after an overdue edge, the hold at zero
 speed before a reversal, the stop, the time-out) happen in a short run; the test
-counts them.
+counts them. With CAL = 1 the disc is a printed one and the block reads its calibration
+table from a file; the stimulus rewrites some of its words (a little off) while the
+disc turns, some near the quarter in use.
 """
 
 from __future__ import annotations
@@ -22,18 +25,34 @@ import pytest
 import cocotb
 
 from common import clock_and_check, rng, start_clock_and_reset
-from prenc.fine.fine_position import FinePosition
-from prenc.fine.velocity import ACCEL_BITS, VELOCITY_BITS, Velocity
+from prenc.cal.table import Table, read
+from prenc.fine.fine import Fine
+from prenc.fine.velocity import ACCEL_BITS, VELOCITY_BITS
+from prenc.virtual.edge_timing import true_corrections
 from prenc.virtual.fine_bench import sync_stream
+from prenc.virtual.printing import Printing
 from prenc.virtual.trajectory import Trajectory
-from runner import SIMULATORS, run
+from runner import SIM_BUILD, SIMULATORS, run
 
 TOPLEVEL = "prenc_fine"
 N, FINE_BITS, LOOKAHEAD_HALVES, WINDOW, TIMER_BITS = 6, 6, 21, 96, 12
 RESET_CLOCKS = 3
+PRINTED = Printing(edge_error=0.03, phase_deg=5, duty_a=0.47, duty_b=0.53, eccentricity=0.05,
+                   seed=38)
 
 
-def stimulus(seed: int) -> tuple[dict[str, np.ndarray], int]:
+def cal_table() -> Table:
+    """The printed disc's table, as a perfect calibration would find it."""
+    c = true_corrections(PRINTED, N)
+    return Table.from_quarters(N, c - c.mean())
+
+
+def cal_file() -> str:
+    """The table's file, where builds that name it are reused."""
+    return str(cal_table().write(SIM_BUILD / "roms" / f"prenc_cal_n{N}_printed.hex"))
+
+
+def stimulus(seed: int, cal: int) -> tuple[dict[str, np.ndarray], int]:
     """The core's outputs to the block, clock by clock (clk_hz = 1: slots per clock)."""
     r = np.random.default_rng(seed)
     traj = (Trajectory(clk_hz=1, start=10.4)
@@ -50,7 +69,7 @@ def stimulus(seed: int) -> tuple[dict[str, np.ndarray], int]:
             .constant(-0.004, 6000)            # a crawl
             .accelerate(-0.03, 3000))
     theta = traj.theta
-    sync = sync_stream(theta, None, n=N)
+    sync = sync_stream(theta, PRINTED if cal else None, n=N)
     total = len(theta)
     illegal = np.zeros(total, dtype=np.int8)
     even_reversal = (14_800, 24_000)   # kept free of them, so that a fit is held at 0 there
@@ -61,42 +80,66 @@ def stimulus(seed: int) -> tuple[dict[str, np.ndarray], int]:
     valid = np.ones(total, dtype=np.int8)
     for c in r.choice(np.arange(1000, total - 600), size=3, replace=False):
         valid[c:c + int(r.integers(50, 500))] = 0
+    # With CAL: words of the table rewritten a little off while the disc turns, near the
+    # quarter in use half of the time (so that a slot is emptied).
+    write = np.zeros(total, dtype=np.int8)
+    address = np.zeros(total, dtype=np.int64)
+    data = np.zeros(total, dtype=np.int64)
+    if cal:
+        table = cal_table().c
+        for c in r.choice(np.arange(100, total - 10), size=400, replace=False):
+            near = int(sync.pos_hyb[c]) + int(r.integers(-2, 3))
+            write[c] = 1
+            address[c] = (near if r.random() < 0.5 else int(r.integers(0, 4 << N))) % (4 << N)
+            data[c] = (int(table[address[c]]) + int(r.integers(-20, 21))) & 0xFFFF
     return {"pos_hyb": sync.pos_hyb, "pos_valid": valid, "step": step, "step_cw": sync.cw,
-            "illegal": illegal}, total
+            "illegal": illegal, "cal_write": write, "cal_address": address, "cal_data": data}, total
 
 
 @cocotb.test()
 async def matches_the_models_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_FINE_SEED", rng().randrange(1 << 30)))  # replay a draw
-    inputs, total = stimulus(seed)
-    vel = Velocity(window=WINDOW, timer_bits=TIMER_BITS)
-    fine = FinePosition(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES)
-    names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal")
+    cal = int(dut.CAL.value)
+    inputs, total = stimulus(seed, cal)
+    table = read(os.environ["PRENC_CAL_FILE"], n=N).c if cal else None
+    model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
+                 timer_bits=TIMER_BITS, cal=cal, table=table)
+    vel = model.velocity
+    names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
+             "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     seen = {state: 0 for state in range(13)}
-    stops = holds = 0
+    stops = holds = looked_up = 0
     columns = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in columns)))
-        fine.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], vel.velocity, vel.valid)
         before = vel.velocity
-        vel.clock(now["step"], now["step_cw"], now["illegal"])
+        model.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], now["illegal"],
+                    write=now["cal_write"], address=now["cal_address"],
+                    data=now["cal_data"] - ((now["cal_data"] & 0x8000) << 1))
         seen[vel.state] += 1
         stops += int(before != 0 and vel.velocity == 0)
         holds += vel.held
+        looked_up += int(cal and model.lookup.ok)
         expected = {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
                     "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
-                    "velocity_valid": vel.valid, "fine_pos": fine.fine_pos, "fine_valid": fine.valid,
-                    "interpolated": fine.interpolated}
+                    "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
+                    "fine_valid": model.fine_valid, "interpolated": model.interpolated}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
-    dut._log.info("seed %d: %d clocks, cycles per sequencer state %s, %d stops, %d clocks held",
-                  seed, total, seen, stops, holds)
+    dut._log.info("seed %d, CAL %d: %d clocks, cycles per sequencer state %s, %d stops, "
+                  "%d clocks held, %d with both words of the table", seed, cal, total, seen,
+                  stops, holds, looked_up)
     assert all(seen[s] > 0 for s in range(13)), seen   # every state of the sequencer ran
     assert stops >= 2 and holds > 0
+    assert not cal or looked_up > 0.9 * total
 
 
+@pytest.mark.parametrize("cal", [0, 1])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_fine(simulator):
-    run(__file__, TOPLEVEL, simulator,
-        parameters={"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
-                    "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS})
+def test_prenc_fine(simulator, cal):
+    parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
+                  "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS, "CAL": cal}
+    env = {}
+    if cal:
+        parameters["CAL_FILE"] = env["PRENC_CAL_FILE"] = cal_file()
+    run(__file__, TOPLEVEL, simulator, parameters=parameters, extra_env=env)

@@ -1,0 +1,82 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Model of rtl/fine/prenc_fine.v: prenc_velocity and prenc_fine_position side by side,
+and with CAL = 1 the calibration table (prenc.cal.lookup, rtl/cal/prenc_cal_lookup.v)
+between them and the disc's true edges.
+
+With CAL = 1 (docs/calibration.md):
+
+- the decoder's quarter q(t) = pos_hyb(t) plus the steps pos_hyb does not show yet
+  (this cycle's and the three before: pos_hyb follows the decoder by 4 clocks) goes to
+  the table, which gives c[q] and c[q + 1] one clock later;
+- so prenc_velocity takes the decoder's step, direction and illegal transition one
+  clock late, with those corrections (c_lo, c_hi);
+- prenc_fine_position takes them 3 clocks later again, when pos_hyb shows that quarter;
+- the corrections count only while the table has both words and pos_valid held when
+  the quarter was asked (else 0: the nominal edges).
+"""
+
+from __future__ import annotations
+
+from ..cal.decoder_quarter import DecoderQuarter
+from ..cal.lookup import CalLookup
+from .fine_position import FinePosition
+from .velocity import FRAC, Velocity
+
+CAL_BITS = 12      # the table's fractional bits (prenc.cal.table.FRAC)
+POS_DELAY = 3      # the table's output -> prenc_fine_position's (pos_hyb follows the
+                   # decoder by 4 clocks; the table answers in 1)
+
+
+class Fine:
+    def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
+                 window: int = 2048, timer_bits: int = 26, cal: int = 0, table=None):
+        if cal not in (0, 1):
+            raise ValueError(f"cal = {cal} must be 0 or 1")
+        self.cal = cal
+        self.velocity = Velocity(window=window, timer_bits=timer_bits,
+                                 cal_bits=CAL_BITS if cal else 0)
+        self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
+        self.lookup = CalLookup(n, table) if cal else None
+        self.decoder_quarter = DecoderQuarter(n)
+        self._reset_pipeline()
+
+    def _reset_pipeline(self) -> None:
+        self.late = (0, 1, 0, 0)                      # step, step_cw, illegal, pos_valid: 1 clock late
+        self.to_fine = [(0, 0)] * POS_DELAY           # corrections on their way
+
+    def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, illegal: int,
+              rst: int = 0, write: int = 0, address: int = 0, data: int = 0) -> None:
+        vel, fine = self.velocity, self.fine
+        if not self.cal:
+            fine.clock(pos_hyb, pos_valid, step, step_cw, vel.velocity, vel.valid, rst)
+            vel.clock(step, step_cw, illegal, rst)
+            return
+        look = self.lookup
+        used = look.ok and self.late[3]
+        c_lo, c_hi = (look.lo, look.hi) if used else (0, 0)
+        shift = FRAC - CAL_BITS
+        f_lo, f_hi = self.to_fine[-1]
+        fine.clock(pos_hyb, pos_valid, step, step_cw, vel.velocity, vel.valid, rst,
+                   c_lo=f_lo << shift, c_hi=f_hi << shift)
+        late_step, late_cw, late_illegal, _ = self.late
+        vel.clock(late_step, late_cw, late_illegal, rst, c_lo=c_lo, c_hi=c_hi)
+        look.clock(self.decoder_quarter.quarter(pos_hyb, step, step_cw), write, address, data, rst)
+        self.decoder_quarter.clock(step, step_cw, rst)
+        if rst:
+            self._reset_pipeline()
+            return
+        self.to_fine = [(c_lo, c_hi)] + self.to_fine[:-1]
+        self.late = (step, step_cw, illegal, pos_valid)
+
+    # What the RTL's outputs show after the clock edge.
+    @property
+    def fine_pos(self) -> int:
+        return self.fine.fine_pos
+
+    @property
+    def fine_valid(self) -> int:
+        return self.fine.valid
+
+    @property
+    def interpolated(self) -> int:
+        return self.fine.interpolated
