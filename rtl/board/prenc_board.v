@@ -2,6 +2,7 @@
 // prenc_board: the reader as it goes on a board, without the board's clock and pins.
 //
 //   encoder pins -> prenc_core -> prenc_host_link (UART to the PC, docs/host-protocol.md)
+//                             -> prenc_edge_capture (the edges' timing, for calibration)
 //                             -> prenc_fine (fine position, velocity; docs/fine.md)
 //                                -> prenc_turns -> prenc_ssi  (SSI to a motion controller)
 //                                               -> prenc_biss (BiSS-C to a servo drive)
@@ -35,6 +36,11 @@
 //   EXTRAPOLATE   1: SSI's and BiSS-C's position is extrapolated by the velocity to the
 //                 master's request (default); 0: the position as the pipeline has it
 //   VELOCITY_WINDOW   prenc_velocity's WINDOW, the shortest window in clocks (2048)
+//   CAL           1: the fine position and the velocity use the sync track's calibration
+//                 table (docs/calibration.md; needs FINE = 1), written over the host
+//                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
+//   CAL_FILE      with CAL = 1: the table ($readmemh, prenc.cal.table's format, checked in
+//                 simulation); "" : all zero until written
 //   LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
 //   SCORE_LIMIT, CONV_REG   the core's decision and build options, passed to it as
 //                 they are (prenc_core's header: ranges and defaults; checked there)
@@ -70,6 +76,8 @@ module prenc_board #(
   parameter integer FINE_BITS       = 0,
   parameter integer EXTRAPOLATE     = 1,
   parameter integer VELOCITY_WINDOW = 2048,
+  parameter integer CAL             = 0,
+  parameter         CAL_FILE        = "",
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
   parameter integer LOCK_ONE        = (N < 8) ? N + 5 : N + 2,
   parameter integer LOCK_EXTRA      = 3,
@@ -132,6 +140,10 @@ module prenc_board #(
     if (FINE == 0 && FINE_BITS != 0) begin : g_bad_fine_bits
       initial $display("ERROR: %m: parameter FINE_BITS = %0d needs FINE = 1", FINE_BITS);
       prenc_board_parameter_FINE_BITS_needs_FINE_1 u_stop ();
+    end
+    if (CAL != 0 && (CAL != 1 || FINE != 1)) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0, or 1 with FINE = 1", CAL);
+      prenc_board_parameter_CAL_must_be_0_or_1_with_FINE_1 u_stop ();
     end
     if (EXTRAPOLATE < 0 || EXTRAPOLATE > 1) begin : g_bad_extrapolate
       initial $display("ERROR: %m: parameter EXTRAPOLATE = %0d must be 0 or 1", EXTRAPOLATE);
@@ -218,12 +230,18 @@ module prenc_board #(
   wire [31:0]         velocity_word;
   wire [31:0]         fine_word = {{(32 - POS_BITS){1'b0}}, fine_pos};
 
+  wire         cal_write;
+  wire [N+1:0] cal_address;
+  wire [15:0]  cal_data;
+
   prenc_fine #(
     .N                (N),
     .FINE_BITS        (F),
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (VELOCITY_WINDOW),
-    .ENABLE           (FINE)
+    .ENABLE           (FINE),
+    .CAL              (CAL),
+    .CAL_FILE         (CAL_FILE)
   ) u_fine (
     .clk            (clk),
     .rst            (rst),
@@ -232,6 +250,9 @@ module prenc_board #(
     .step           (sync_step),
     .step_cw        (direction),
     .illegal        (sync_illegal),
+    .cal_write      (cal_write),
+    .cal_address    (cal_address),
+    .cal_data       (cal_data),
     .fine_pos       (fine_pos),
     .fine_valid     (fine_valid),
     .interpolated   (interpolated),
@@ -241,13 +262,46 @@ module prenc_board #(
     .velocity_word  (velocity_word)
   );
 
+  // The edges' timing, for a calibration run (the host link's EDGES answer).
+  wire [1:0]   edge_run;
+  wire         edge_valid;
+  wire         edge_cw;
+  wire [N+1:0] edge_first;
+  wire [15:0]  edge_interval0;
+  wire [15:0]  edge_interval1;
+  wire [15:0]  edge_interval2;
+  wire         edge_lost;
+  wire         edge_take;
+
+  prenc_edge_capture #(
+    .N (N)
+  ) u_edges (
+    .clk       (clk),
+    .rst       (rst),
+    .step      (sync_step),
+    .step_cw   (direction),
+    .illegal   (sync_illegal),
+    .pos_hyb   (pos_hyb),
+    .pos_valid (valid),
+    .take      (edge_take),
+    .run       (edge_run),
+    .run_valid (edge_valid),
+    .run_cw    (edge_cw),
+    .run_edge  (edge_first),
+    .interval0 (edge_interval0),
+    .interval1 (edge_interval1),
+    .interval2 (edge_interval2),
+    .lost      (edge_lost)
+  );
+
   wire [15:0] link_errors;
   wire        snapshot;
 
   prenc_host_link #(
     .N      (N),
     .CLK_HZ (CLK_HZ),
-    .BAUD   (BAUD)
+    .BAUD   (BAUD),
+    .CAL    (CAL)
   ) u_link (
     .clk           (clk),
     .rst           (rst),
@@ -269,6 +323,18 @@ module prenc_board #(
     .fine_pos      (fine_word),
     .velocity      (velocity_word),
     .fine_info     ({2'b00, interpolated, velocity_valid, F[3:0]}),
+    .edge_run       (edge_run),
+    .edge_valid     (edge_valid),
+    .edge_cw        (edge_cw),
+    .edge_first     (edge_first),
+    .edge_interval0 (edge_interval0),
+    .edge_interval1 (edge_interval1),
+    .edge_interval2 (edge_interval2),
+    .edge_lost      (edge_lost),
+    .edge_take      (edge_take),
+    .cal_write      (cal_write),
+    .cal_address    (cal_address),
+    .cal_data       (cal_data),
     .clear_errors  (clear_errors),
     .link_errors   (link_errors),
     .snapshot      (snapshot)

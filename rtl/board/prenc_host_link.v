@@ -8,6 +8,8 @@
 //            02 STREAM kind, period    answers of that kind every `period` us
 //                                      (big-endian, 4 bytes; 0 stops: one STATUS)
 //            03 CLEAR                  clears every error counter, answers STATUS
+//            04 WRITE_CAL address[3], word[2]   a word of the calibration table (CAL = 1),
+//                                      answers STATUS
 //   answer   80+kind, payload = FLAGS, SEQ, TIME[4], data of the kind
 //            kind 0 ABS    pos_abs, 2 bytes        kind 1 HYBRID  pos_hyb, 3 bytes
 //            kind 2 INCR   incremental, 4 bytes    kind 3 TRACKS  t1, t2 (2 bytes), flags
@@ -15,7 +17,11 @@
 //            kind 5 FINE   fine position (4 bytes), velocity (4, quarters per clock x 2^32),
 //                          info (bits 3:0 FINE_BITS, 4 velocity valid, 5 interpolated),
 //                          the clock in MHz (1)
-//            FF NACK       code (1 unknown type, 2 bad length, 3 unknown kind), request type
+//            kind 6 EDGES  info (bit 7 lost, 6 direction CW, 5 pos_valid, 1:0 run), the run's
+//                          first edge (3 bytes), 3 intervals (2 bytes each, clocks; 0 past
+//                          the run): prenc_edge_capture's run, taken by the answer
+//            FF NACK       code (1 unknown type, 2 bad length, 3 unknown kind, 4 no
+//                          calibration table, 5 address out of range), request type
 //   FLAGS    bit 7 pos_valid, bits 6:4 mode, bit 3 direction, bit 2 streaming
 //   SEQ      counts answers (mod 256); TIME microseconds since reset (mod 2^32)
 //
@@ -28,6 +34,7 @@
 //   N         code word length of the core, 4..16
 //   CLK_HZ    clock frequency, a multiple of 1 MHz (for TIME and the stream period)
 //   BAUD      UART baud rate; CLK_HZ / BAUD >= 4 and the rounding error <= 2 %
+//   CAL       1: the board has a calibration table (WRITE_CAL writes it); 0: NACK 4
 //
 // Ports
 //   clk, rst               one clock; synchronous active-high reset
@@ -35,6 +42,8 @@
 //   pos_abs ... sync_errors   the core's outputs
 //   fine_pos, velocity, fine_info   prenc_fine's (FINE): the fine position zero-extended,
 //                          the velocity word, {2'b0, interpolated, velocity_valid, FINE_BITS}
+//   edge_*                 prenc_edge_capture's run; edge_take, one clock: the run is taken
+//   cal_write, cal_address, cal_data   a word of the calibration table (WRITE_CAL)
 //   clear_errors           one clock, to the core (CLEAR)
 //   link_errors            rejected request frames since reset or CLEAR
 //   snapshot               one clock: an answer starts, with the core's values of this clock
@@ -46,7 +55,8 @@
 module prenc_host_link #(
   parameter integer N      = 10,
   parameter integer CLK_HZ = 24000000,
-  parameter integer BAUD   = 115200
+  parameter integer BAUD   = 115200,
+  parameter integer CAL    = 0
 ) (
   input  wire          clk,
   input  wire          rst,
@@ -68,6 +78,18 @@ module prenc_host_link #(
   input  wire [31:0]   fine_pos,
   input  wire [31:0]   velocity,
   input  wire [7:0]    fine_info,
+  input  wire [1:0]    edge_run,
+  input  wire          edge_valid,
+  input  wire          edge_cw,
+  input  wire [N+1:0]  edge_first,
+  input  wire [15:0]   edge_interval0,
+  input  wire [15:0]   edge_interval1,
+  input  wire [15:0]   edge_interval2,
+  input  wire          edge_lost,
+  output wire          edge_take,
+  output wire          cal_write,
+  output wire [N+1:0]  cal_address,
+  output wire [15:0]   cal_data,
   output wire          clear_errors,
   output wire [15:0]   link_errors,
   output wire          snapshot
@@ -79,6 +101,10 @@ module prenc_host_link #(
                                                                    : CLK_HZ - CLKS_PER_BIT * BAUD;
 
   generate
+    if (CAL != 0 && CAL != 1) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
+      prenc_host_link_parameter_CAL_must_be_0_or_1 u_stop ();
+    end
     if (N < 4 || N > 16) begin : g_bad_n
       initial $display("ERROR: %m: parameter N = %0d is out of range 4..16", N);
       prenc_host_link_parameter_N_out_of_range_4_to_16 u_stop ();
@@ -98,7 +124,7 @@ module prenc_host_link #(
     end
   endgenerate
 
-  localparam [7:0]  VERSION     = 8'd2;
+  localparam [7:0]  VERSION     = 8'd3;
   localparam [31:0] CLK_MHZ     = CLK_HZ / 1000000;
   localparam [31:0] N_32        = N;
   localparam [31:0] US_LIMIT_32 = CLKS_PER_US - 1;
@@ -107,9 +133,10 @@ module prenc_host_link #(
   localparam [7:0] REQ_READ   = 8'h01;
   localparam [7:0] REQ_STREAM = 8'h02;
   localparam [7:0] REQ_CLEAR  = 8'h03;
+  localparam [7:0] REQ_WRITE  = 8'h04;
   localparam [7:0] ANS_DATA   = 8'h80;
   localparam [7:0] ANS_NACK   = 8'hFF;
-  localparam [2:0] KIND_LAST  = 3'd5;
+  localparam [2:0] KIND_LAST  = 3'd6;
   localparam [2:0] KIND_STAT  = 3'd4;
 
   // --- UART and framing -------------------------------------------------------
@@ -174,12 +201,19 @@ module prenc_host_link #(
   reg [15:0]  link_errors_reg;
   reg         start_reg;
   reg [7:0]   start_type;
+  reg         cal_write_reg;
+  reg [N+1:0] cal_address_reg;
+  reg [15:0]  cal_data_reg;
 
   wire [2:0]  req_kind   = req_payload[2:0];
   wire        kind_ok    = (req_payload[7:3] == 5'd0) && (req_kind <= KIND_LAST);
   wire [31:0] req_period = {req_payload[15:8], req_payload[23:16],
                             req_payload[31:24], req_payload[39:32]};
   wire        can_start  = ~tx_busy & ~start_reg;
+  // WRITE_CAL: the address (3 bytes) and the word (2), big-endian.
+  wire [23:0] req_address = {req_payload[7:0], req_payload[15:8], req_payload[23:16]};
+  wire [15:0] req_word    = {req_payload[31:24], req_payload[39:32]};
+  wire        address_ok  = (req_address >> (N + 2)) == 24'd0;
 
   always @(posedge clk) begin
     // Time base.
@@ -205,7 +239,8 @@ module prenc_host_link #(
     end
 
     // Requests.
-    clear_reg <= 1'b0;
+    clear_reg     <= 1'b0;
+    cal_write_reg <= 1'b0;
     clearing  <= clear_reg;
     if (req_error && link_errors_reg != 16'hFFFF) begin
       link_errors_reg <= link_errors_reg + 16'd1;
@@ -247,6 +282,19 @@ module prenc_host_link #(
           link_errors_reg <= 16'd0;
           pending_type    <= ANS_DATA | {5'd0, KIND_STAT};
         end
+      end else if (req_type == REQ_WRITE) begin
+        cal_address_reg <= req_address[N+1:0];
+        cal_data_reg    <= req_word;
+        if (req_len != 8'd5) begin
+          nack_code <= 8'd2;
+        end else if (CAL == 0) begin
+          nack_code <= 8'd4;
+        end else if (!address_ok) begin
+          nack_code <= 8'd5;
+        end else begin
+          cal_write_reg   <= 1'b1;
+          pending_type    <= ANS_DATA | {5'd0, KIND_STAT};
+        end
       end else begin
         nack_code <= 8'd1;
       end
@@ -279,6 +327,7 @@ module prenc_host_link #(
       seq             <= 8'd0;
       link_errors_reg <= 16'd0;
       start_reg       <= 1'b0;
+      cal_write_reg   <= 1'b0;
     end
   end
 
@@ -288,12 +337,15 @@ module prenc_host_link #(
   reg [23:0] hyb24;
   reg [15:0] t1_16;
   reg [15:0] t2_16;
+  reg [23:0] edge24;
 
   always @* begin
     abs16 = 16'd0;
     hyb24 = 24'd0;
     t1_16 = 16'd0;
     t2_16 = 16'd0;
+    edge24 = 24'd0;
+    edge24[N+1:0] = edge_first;
     abs16[N-1:0] = pos_abs;
     hyb24[N+1:0] = pos_hyb;
     t1_16[N-1:0] = track1_pos;
@@ -365,6 +417,19 @@ module prenc_host_link #(
         payload[127:120] = CLK_MHZ[7:0];
         length = 8'd16;
       end
+      ANS_DATA | 8'd6: begin
+        payload[55:48]   = {edge_lost, edge_cw, edge_valid, 3'b000, edge_run};
+        payload[63:56]   = edge24[23:16];
+        payload[71:64]   = edge24[15:8];
+        payload[79:72]   = edge24[7:0];
+        payload[87:80]   = edge_interval0[15:8];
+        payload[95:88]   = edge_interval0[7:0];
+        payload[103:96]  = edge_interval1[15:8];
+        payload[111:104] = edge_interval1[7:0];
+        payload[119:112] = edge_interval2[15:8];
+        payload[127:120] = edge_interval2[7:0];
+        length = 8'd16;
+      end
       default: begin  // NACK
         payload[55:48] = nack_code;
         payload[63:56] = nack_of;
@@ -401,6 +466,10 @@ module prenc_host_link #(
 
   wire unused_ok = &{1'b0, rx_busy, req_payload[7:3]};
 
+  assign edge_take    = start_reg && (start_type == (ANS_DATA | 8'd6));
+  assign cal_write    = cal_write_reg;
+  assign cal_address  = cal_address_reg;
+  assign cal_data     = cal_data_reg;
   assign clear_errors = clear_reg;
   assign link_errors  = link_errors_reg;
   assign snapshot     = start_reg;

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from enum import IntEnum
 
 SOF = 0xA5
-VERSION = 2
+VERSION = 3
 REQUEST_MAX_LEN = 5  # prenc_host_link's parser limit
 ANSWER_MAX_LEN = 16
 HEADER_LEN = 6  # FLAGS, SEQ, TIME[4]
@@ -33,6 +33,7 @@ class Request(IntEnum):
     READ = 0x01
     STREAM = 0x02
     CLEAR = 0x03
+    WRITE_CAL = 0x04
 
 
 class Kind(IntEnum):
@@ -42,16 +43,19 @@ class Kind(IntEnum):
     TRACKS = 3
     STATUS = 4
     FINE = 5
+    EDGES = 6
 
 
 ANSWER_DATA = 0x80
 ANSWER_NACK = 0xFF
-NACK_CODES = {1: "unknown request type", 2: "bad length", 3: "unknown kind"}
+NACK_CODES = {1: "unknown request type", 2: "bad length", 3: "unknown kind",
+              4: "the board has no calibration table (built with CAL = 0)",
+              5: "calibration table address out of range"}
 MODE_NAMES = {0: "ACQUIRE", 1: "NORMAL", 2: "REDUCED_1", 3: "REDUCED_2", 4: "INCREMENTAL"}
 
 # Data bytes after the header, per kind.
 DATA_LEN = {Kind.ABS: 2, Kind.HYBRID: 3, Kind.INCREMENTAL: 4, Kind.TRACKS: 5, Kind.STATUS: 10,
-            Kind.FINE: 10}
+            Kind.FINE: 10, Kind.EDGES: 10}
 VELOCITY_FRAC = 32  # FINE's velocity: quarters per clock x 2^32
 
 
@@ -87,6 +91,15 @@ def stream_request(kind: Kind | int, period_us: int) -> bytes:
 
 def clear_request() -> bytes:
     return encode(Request.CLEAR)
+
+
+def write_cal_request(address: int, word: int) -> bytes:
+    """WRITE_CAL: word c[address] of the calibration table (signed 16 bits)."""
+    if not 0 <= address < 1 << 24:
+        raise ValueError(f"calibration table address {address} is out of range 0..2^24-1")
+    if not -(1 << 15) <= word < 1 << 16:
+        raise ValueError(f"calibration word {word} does not fit 16 bits")
+    return encode(Request.WRITE_CAL, address.to_bytes(3, "big") + struct.pack(">H", word & 0xFFFF))
 
 
 @dataclass(frozen=True)
@@ -224,6 +237,12 @@ def decode(frame: Frame) -> Answer | Nack:
     elif kind == Kind.TRACKS:
         t1, t2, tf = struct.unpack(">HHB", data)
         values = {"track1": t1, "track2": t2, "track1_valid": bool(tf & 1), "track2_valid": bool(tf & 2)}
+    elif kind == Kind.EDGES:
+        info = data[0]
+        run = info & 3
+        values = {"lost": bool(info & 0x80), "cw": bool(info & 0x40), "pos_valid": bool(info & 0x20),
+                  "run": run, "edge": int.from_bytes(data[1:4], "big"),
+                  "intervals": list(struct.unpack(">HHH", data[4:10]))[:run]}
     elif kind == Kind.FINE:
         fine, velocity, info, clk_mhz = struct.unpack(">IiBB", data)
         values = {"fine_position": fine, "fine_bits": info & 0x0F, "velocity": velocity,
@@ -249,6 +268,10 @@ def encode_answer(answer: Answer) -> bytes:
         data = struct.pack(">i", v["count"])
     elif answer.kind == Kind.TRACKS:
         data = struct.pack(">HHB", v["track1"], v["track2"], v["track1_valid"] | (v["track2_valid"] << 1))
+    elif answer.kind == Kind.EDGES:
+        info = (v["lost"] << 7) | (v["cw"] << 6) | (v["pos_valid"] << 5) | v["run"]
+        intervals = list(v["intervals"]) + [0] * (3 - len(v["intervals"]))
+        data = bytes([info]) + v["edge"].to_bytes(3, "big") + struct.pack(">HHH", *intervals)
     elif answer.kind == Kind.FINE:
         info = v["fine_bits"] | (v["velocity_valid"] << 4) | (v["interpolated"] << 5)
         data = struct.pack(">IiBB", v["fine_position"], v["velocity"], info, v["clk_mhz"])

@@ -29,10 +29,19 @@ def test_answers_round_trip(kind):
               Kind.STATUS: {"version": 1, "bits": 10, "track1_errors": 1, "track2_errors": 2, "sync_errors": 3,
                             "link_errors": 65535},
               Kind.FINE: {"fine_position": 0x3FFFF, "fine_bits": 6, "velocity": -641, "velocity_valid": True,
-                          "interpolated": False, "clk_mhz": 30}}[kind]
+                          "interpolated": False, "clk_mhz": 30},
+              Kind.EDGES: {"lost": False, "cw": True, "pos_valid": True, "run": 2, "edge": 4095,
+                           "intervals": [65535, 1]}}[kind]
     answer = Answer(kind, True, 2, 1, False, 7, 123456789, values)
     frames = FrameParser().feed(protocol.encode_answer(answer))
     assert [protocol.decode(f) for f in frames] == [answer]
+
+
+def test_write_cal_request_layout():
+    frame = protocol.write_cal_request(0x012345, -2)
+    assert frame[1:3] == bytes([0x04, 5]) and frame[3:8] == bytes([0x01, 0x23, 0x45, 0xFF, 0xFE])
+    with pytest.raises(ValueError):
+        protocol.write_cal_request(1 << 24, 0)
 
 
 def test_velocity_in_rpm():

@@ -5,7 +5,8 @@ Requests are sent bit by bit onto `rx` and answers decoded from `tx` with
 prenc.board.protocol (the host's own parser and layouts). Expected values: the core
 outputs the test drives, the protocol document's layouts, and the time base
 (CLK_HZ): every kind of answer, NACKs, corrupted requests counted and the next
-good one answered, CLEAR, and streaming at its period and back to back.
+good one answered, CLEAR, and streaming at its period and back to back; WRITE_CAL's
+word on cal_* (CAL = 1) or its NACK (CAL = 0), and EDGES taking the run it sends.
 """
 
 from __future__ import annotations
@@ -45,7 +46,11 @@ class Link:
                   "track2_pos": r.randrange(1 << n), "track2_valid": r.randrange(2),
                   "track1_errors": r.randrange(1 << 16), "track2_errors": r.randrange(1 << 16),
                   "sync_errors": r.randrange(1 << 16), "fine_pos": r.randrange(1 << 32),
-                  "velocity": r.randrange(1 << 32), "fine_info": r.randrange(64)}
+                  "velocity": r.randrange(1 << 32), "fine_info": r.randrange(64),
+                  "edge_run": r.randrange(4), "edge_valid": r.randrange(2), "edge_cw": r.randrange(2),
+                  "edge_first": r.randrange(1 << (n + 2)), "edge_interval0": r.randrange(1 << 16),
+                  "edge_interval1": r.randrange(1 << 16), "edge_interval2": r.randrange(1 << 16),
+                  "edge_lost": r.randrange(2)}
         for name, value in values.items():
             getattr(self.dut, name).value = value
         return values
@@ -81,6 +86,10 @@ def expected_values(kind: Kind, v: dict, n: int, link_errors: int, clk_mhz: int 
         w, info = v["velocity"], v["fine_info"]
         return {"fine_position": v["fine_pos"], "fine_bits": info & 15, "velocity": w - (1 << 32) if w >> 31 else w,
                 "velocity_valid": bool(info & 16), "interpolated": bool(info & 32), "clk_mhz": clk_mhz}
+    if kind == Kind.EDGES:
+        intervals = [v["edge_interval0"], v["edge_interval1"], v["edge_interval2"]][:v["edge_run"]]
+        return {"lost": bool(v["edge_lost"]), "cw": bool(v["edge_cw"]), "pos_valid": bool(v["edge_valid"]),
+                "run": v["edge_run"], "edge": v["edge_first"], "intervals": intervals}
     return {"version": protocol.VERSION, "bits": n, "track1_errors": v["track1_errors"],
             "track2_errors": v["track2_errors"], "sync_errors": v["sync_errors"], "link_errors": link_errors}
 
@@ -115,6 +124,55 @@ async def every_kind_on_demand(dut):
             seq += 1
             now_us = get_sim_time("ns") / PERIOD_NS / link.clks_per_us
             assert now_us - 2 * link.frame_clocks / link.clks_per_us <= answer.time_us <= now_us
+
+
+@cocotb.test()
+async def edges_take_the_run_they_send(dut):
+    """edge_take is high for one clock, on the clock the EDGES answer starts (its values
+    are that clock's), and for no other answer."""
+    link, r = await setup(dut)
+    takes = []
+
+    async def count_takes():
+        while True:
+            await RisingEdge(dut.clk)
+            if int(dut.edge_take.value):
+                takes.append(get_sim_time("ns"))
+    watcher = cocotb.start_soon(count_takes())
+    for kind in (Kind.EDGES, Kind.FINE, Kind.EDGES, Kind.STATUS):
+        v = link.drive(r)
+        answer = await link.ask(protocol.read_request(kind))
+        assert answer.kind == kind and answer.values == expected_values(kind, v, link.n, 0, link.clks_per_us)
+    watcher.cancel()
+    assert len(takes) == 2, takes
+
+
+@cocotb.test()
+async def write_cal_writes_a_word_or_is_refused(dut):
+    link, r = await setup(dut)
+    cal = int(dut.CAL.value)
+    size = 4 << link.n
+    writes = []
+
+    async def watch():
+        while True:
+            await RisingEdge(dut.clk)
+            if int(dut.cal_write.value):
+                writes.append((int(dut.cal_address.value), int(dut.cal_data.value)))
+    watcher = cocotb.start_soon(watch())
+    sent = [(r.randrange(size), r.randrange(-(1 << 15), 1 << 15)) for _ in range(3)]
+    for address, word in sent:
+        answer = await link.ask(protocol.write_cal_request(address, word))
+        if cal:
+            assert isinstance(answer, Answer) and answer.kind == Kind.STATUS, answer
+        else:
+            assert isinstance(answer, Nack) and (answer.code, answer.request) == (4, 4), answer
+    answer = await link.ask(protocol.write_cal_request(size, 0))       # past the table
+    assert isinstance(answer, Nack) and answer.code == (5 if cal else 4), answer
+    answer = await link.ask(protocol.encode(protocol.Request.WRITE_CAL, b"\x00\x00\x01"))   # too short
+    assert isinstance(answer, Nack) and answer.code == 2, answer
+    watcher.cancel()
+    assert writes == ([(a, w & 0xFFFF) for a, w in sent] if cal else []), writes
 
 
 @cocotb.test()
@@ -236,3 +294,9 @@ def test_prenc_host_link(clk_hz, baud):
 
 def test_prenc_host_link_icarus():
     run(__file__, TOPLEVEL, "icarus", parameters={"N": 10, "CLK_HZ": 24_000_000, "BAUD": 3_000_000})
+
+
+@pytest.mark.parametrize("simulator", ["verilator", "icarus"])
+def test_prenc_host_link_with_a_calibration_table(simulator):
+    run(__file__, TOPLEVEL, simulator, parameters={"N": 10, "CLK_HZ": 24_000_000, "BAUD": 3_000_000, "CAL": 1},
+        testcase="write_cal_writes_a_word_or_is_refused")
