@@ -29,7 +29,7 @@ from . import protocol
 from .protocol import Answer, FrameParser, Kind, Nack
 
 DEFAULT_BAUD = 115200
-KINDS = {k.name.lower(): k for k in Kind}
+KINDS = {k.name.lower(): k for k in Kind if k != Kind.EDGES}   # EDGES: prenc calibrate's
 CSV_FIELDS = ("host_time_s", "board_time_us", "seq", "kind", "valid", "mode", "direction",
               "position", "angle_deg", "count", "track1", "track2", "track1_valid", "track2_valid",
               "fine_position", "fine_bits", "velocity_rpm", "velocity_valid")
@@ -155,6 +155,10 @@ class Board:
 
     def clear(self) -> Answer:
         return self._ask(protocol.clear_request(), Kind.STATUS)
+
+    def write_cal(self, address: int, word: int) -> Answer:
+        """Word `address` of the board's calibration table (WRITE_CAL)."""
+        return self._ask(protocol.write_cal_request(address, word), Kind.STATUS)
 
     def start_stream(self, kind: Kind, period_us: int) -> Answer:
         if period_us <= 0:

@@ -6,6 +6,7 @@
     prenc taps   --bits N [--taps a,b,...]
     prenc demo   [--out DIR]
     prenc host   read|monitor|log|plot ...   (the board over its UART; see prenc.board.host)
+    prenc calibrate --port ... --out FILE    (the disc's sync track; prenc.board.calibration)
     prenc nd     search|table|phase|image|rom ...   ((n,d)-sequences; see prenc.nd.cli)
     prenc matrix generate|count|example|rom ...    (2-D matrix codes; see prenc.matrix.cli)
     prenc disc   dual|matrix|nd ...               (printable discs, SVG + PNG; see prenc.cli.disc)
@@ -102,6 +103,9 @@ def build_parser() -> argparse.ArgumentParser:
     from ..board.host import add_parser as add_host_parser
 
     add_host_parser(sub)
+    from ..board.calibration import add_parser as add_calibrate_parser
+
+    add_calibrate_parser(sub)
     from ..nd.cli import add_parser as add_nd_parser
 
     add_nd_parser(sub)
@@ -120,7 +124,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args.func(args)
     except HostError as exc:
-        sys.stderr.write(f"prenc host: error: {exc}\n")
+        sys.stderr.write(f"prenc {args.command}: error: {exc}\n")
         return 1
     except (ValueError, TapsError, OSError) as exc:
         message = str(exc) if not isinstance(exc, OSError) or not exc.filename else f"{exc.filename}: {exc.strerror}"

@@ -11,6 +11,7 @@ environment variable PRENC_BOARD_SIM (JSON):
                            missed states are drawn anew for each chunk of encoder
                            signal (board_harness.CHUNK clocks)
     seconds                board time to simulate (0: until stopped)
+    printed                a printed disc (prenc.virtual.fine_bench.PRINTED), not the ideal one
     port_file              where to write the pty's name (for scripts and tests)
 
 It prints the pty's name, then every few seconds how fast it simulates against
@@ -32,6 +33,7 @@ from board_harness import Bridge, drive_encoder, start_board
 from common import PERIOD_NS
 from prenc.virtual.encoder import Disc
 from prenc.virtual.faults import DeadHead, MissedQuadratureState, RandomMisreads
+from prenc.virtual.fine_bench import PRINTED
 from prenc.virtual.profiles import profile
 
 REPORT_S = 5.0  # wall-clock seconds between speed reports
@@ -60,14 +62,16 @@ async def virtual_board(dut):
     n, clk_hz, baud = int(cfg["n"]), float(cfg["clk_hz"]), int(cfg["baud"])
     await start_board(dut)
     theta_at = profile(cfg["profile"], float(cfg["rpm"]), n, clk_hz)
-    cocotb.start_soon(drive_encoder(dut, theta_at, faults_of(cfg), Disc(n)))
+    disc = Disc(n, printing=PRINTED if cfg.get("printed") else None)
+    cocotb.start_soon(drive_encoder(dut, theta_at, faults_of(cfg), disc))
     bridge = Bridge(dut, round(clk_hz / baud), snapshots=False)
     if cfg.get("port_file"):
         Path(cfg["port_file"]).write_text(bridge.port + "\n")
     first = faults_of(cfg)(0)
     described = ", faults: " + ", ".join(type(f).__name__ for f in first) if first else ""
+    printed = ", a printed disc" if cfg.get("printed") else ""
     print(f"virtual board: prenc_board, N = {n}, {clk_hz / 1e6:g} MHz, {cfg['profile']} at "
-          f"{float(cfg['rpm']):g} rpm{described}", flush=True)
+          f"{float(cfg['rpm']):g} rpm{printed}{described}", flush=True)
     print(f"virtual board: UART on {bridge.port}   try: prenc host monitor --port {bridge.port} --rate 1000",
           flush=True)
     end_clocks = float(cfg.get("seconds", 0)) * clk_hz  # 0: until stopped
