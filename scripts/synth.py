@@ -78,6 +78,7 @@ class Board:
     top: str
     pins: str  # .pcf or .lpf, relative to constraints/<name>/
     clock_mhz: float  # the design clock (after the board's PLL)
+    cal: bool = False  # the top has the calibration table's parameters (CAL, CAL_FILE)
 
     @property
     def folder(self) -> Path:
@@ -86,7 +87,7 @@ class Board:
 
 BOARDS = {
     "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 30.0),
-    "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 50.0),
+    "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 50.0, cal=True),
 }
 
 
@@ -275,12 +276,32 @@ def write_report(result: Result, out: Path) -> None:
     (out / "report.md").write_text("```\n" + summary(result) + "\n```\n")
 
 
-def board_build(board: Board, bits: int, out: Path, baud: int | None = None) -> Result:
+def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
+    """The parameters of a build with the calibration table: CAL = 1 and, unless `cal`
+    is "1" (an empty table, written at run time), the table file, checked (N, size, CRC)
+    and copied beside the build."""
+    from prenc.cal.table import TableError, read
+
+    if not board.cal:
+        raise FlowError(f"the {board.name} board has no calibration table: it builds the board without "
+                        "the fine position (FINE = 0)")
+    if cal == "1":
+        return {"CAL": 1}
+    try:
+        table = read(cal, n=bits)
+    except TableError as exc:
+        raise FlowError(str(exc)) from None
+    return {"CAL": 1, "CAL_FILE": table.write(out / "calibration.hex")}
+
+
+def board_build(board: Board, bits: int, out: Path, baud: int | None = None, cal: str | None = None) -> Result:
     rom = rom_for(bits, out)
     sources = file_list(board.folder / f"{board.top}.f")
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
     if baud:
         params["BAUD"] = baud
+    if cal:
+        params.update(cal_for(cal, bits, board, out))
     return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins)
 
 
@@ -360,6 +381,9 @@ def main(argv: list[str] | None = None) -> int:
     what.add_argument("--core", choices=sorted(TARGETS), help="the core alone, placed and routed, no bitstream")
     parser.add_argument("--bits", type=int, default=10, help="N, the code word length (default 10)")
     parser.add_argument("--baud", type=int, help="UART baud rate (default: the board's, 115200)")
+    parser.add_argument("--cal", metavar="FILE|1",
+                        help="with --board: build the calibration table in (CAL = 1): a table file from "
+                             "`prenc calibrate` (checked), or 1 for an empty one, written at run time")
     parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
     parser.add_argument("--top", choices=("prenc_core", "prenc_core_harness", "prenc_wb", "prenc_wb_harness"),
                         default="prenc_core",
@@ -380,6 +404,8 @@ def main(argv: list[str] | None = None) -> int:
         parser.error(str(err))
     if extra and not args.core:
         parser.error("--param goes with --core")
+    if args.cal and not args.board:
+        parser.error("--cal goes with --board")
     if seeds != [1] and not args.core:
         parser.error("--seeds goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
@@ -395,7 +421,7 @@ def main(argv: list[str] | None = None) -> int:
         where = out / f"seed{seed}" if sweep else out
         try:
             if args.board:
-                result = board_build(BOARDS[args.board], args.bits, where, args.baud)
+                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal)
             else:
                 result = core_build(args.core, args.bits, args.freq, where, top=args.top, parameters=extra,
                                     seed=seed, require_timing=not sweep)

@@ -24,7 +24,9 @@ module prenc_ulx3s #(
   parameter [31:0]  TAPS     = 32'h0000_0204,
   parameter integer FILTER   = 2,
   parameter         ROM_FILE = "prenc_rom_n10.hex",
-  parameter integer BAUD     = 115200
+  parameter integer BAUD     = 115200,
+  parameter integer CAL      = 0,
+  parameter         CAL_FILE = ""
 ) (
   input  wire       clk_25mhz,
   input  wire [1:1] btn,
@@ -101,7 +103,9 @@ module prenc_ulx3s #(
     .FILTER   (FILTER),
     .ROM_FILE (ROM_FILE),
     .CLK_HZ   (CLK_HZ),
-    .BAUD     (BAUD)
+    .BAUD     (BAUD),
+    .CAL      (CAL),
+    .CAL_FILE (CAL_FILE)
   ) u_board (
     .clk             (clk),
     .rst             (rst),

@@ -26,6 +26,7 @@ pytestmark = pytest.mark.xdist_group("fusesoc")
 
 BIN = Path(sys.executable).parent
 CORES = ["prenc:reader:common:0.1.0", "prenc:reader:core:0.1.0", "prenc:reader:fine:0.1.0",
+         "prenc:reader:cal:0.1.0",
          "prenc:reader:bus:0.1.0",
          "prenc:reader:board:0.1.0",
          "prenc:board:icebreaker:0.1.0", "prenc:board:ulx3s:0.1.0", "prenc:codes:nd:0.1.0",
@@ -97,7 +98,8 @@ def test_core_lint_runs_the_rom_generator(library):
     assert "-Wall" in (work / "Makefile").read_text() + (work / "config.mk").read_text()
 
 
-@pytest.mark.parametrize("core", ["prenc:reader:fine", "prenc:reader:bus", "prenc:reader:board",
+@pytest.mark.parametrize("core", ["prenc:reader:fine", "prenc:reader:cal", "prenc:reader:bus",
+                                  "prenc:reader:board",
                                   "prenc:codes:nd", "prenc:codes:matrix"])
 def test_every_subsystem_lints_clean(library, core):
     name = core.split(":")[-1]
