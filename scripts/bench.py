@@ -492,6 +492,10 @@ def cal_section() -> bool:
     worst_pos = max(rows[k]["calibrated"].fine[0] for k in steady)
     worst_vel = max(rows[k]["calibrated"].velocity[1] for k in steady)
     turns = needed[(cb.CAL_RPM, *cb.CAL_RIPPLE)]
+    print("\n   d. Logic (Yosys; block RAM: the table, 4 x 2^N words of 16 bits)")
+    for line in cal_logic_rows(c_true):
+        print(f"   {line}")
+
     print("\n   Goals (printed disc, after calibration):")
     print(f"   steady 10 to 10,000 rpm: fine position <= 1/128 slot RMS: worst {worst_pos:.5f}: "
           f"{verdict(worst_pos <= 1 / 128)}; velocity ripple <= 0.1 %: worst {worst_vel:.4f} % max: "
@@ -499,6 +503,51 @@ def cal_section() -> bool:
     print(f"   converges in <= 10 turns with +-2 % ripple at {cb.CAL_RIPPLE[1]:.0f} Hz, {cb.CAL_RPM:.0f} rpm: "
           f"{turns} turns: {verdict(turns is not None and turns <= 10)}")
     return failed
+
+
+def cal_logic_rows(c_true) -> list[str]:
+    """What the calibration costs: prenc_fine with and without the table (Yosys, iCE40 and
+    ECP5 cells), prenc_edge_capture, and the ULX3S board built with the table (placed and
+    routed at its design clock)."""
+    sys.path.insert(0, str(REPO / "scripts"))
+    sys.path.insert(0, str(REPO / "tb"))
+    import synth
+    from yosys import synthesize
+
+    from prenc.cal.table import Table
+
+    table = Table.from_quarters(10, c_true - c_true.mean()).write(SIM_BUILD / "bench" / "cal_n10.hex")
+    rows = []
+
+    def cells(result, family) -> str:
+        c = result.cells
+        if family == "ice40":
+            lut, ram = c.get("SB_LUT4", 0), c.get("SB_RAM40_4K", 0)
+            ff = sum(n for k, n in c.items() if k.startswith("SB_DFF"))
+            return f"{lut} LUT4, {ff} FF, {ram} SB_RAM40_4K"
+        lut, ram = c.get("LUT4", 0), c.get("DP16KD", 0)
+        ff = sum(n for k, n in c.items() if k.startswith("TRELLIS_FF"))
+        return f"{lut} LUT4, {ff} FF, {ram} DP16KD"
+    for family in ("ice40", "ecp5"):
+        base = {"N": 10, "FINE_BITS": 8}
+        try:
+            without = synthesize("prenc_fine", family, base)
+            with_cal = synthesize("prenc_fine", family, base | {"CAL": 1, "CAL_FILE": table})
+            capture = synthesize("prenc_edge_capture", family, {"N": 10})
+            rows.append(f"{family}: prenc_fine {cells(without, family)}; with CAL = 1 {cells(with_cal, family)}; "
+                        f"prenc_edge_capture {cells(capture, family)}")
+        except RuntimeError as err:
+            rows.append(f"{family}: FAILED: {str(err).splitlines()[0]}")
+    for cal in (None, str(table)):
+        out = SIM_BUILD / "bench" / "synth" / f"ulx3s-n10{'-cal' if cal else ''}"
+        try:
+            r = synth.board_build(synth.BOARDS["ulx3s"], 10, out, cal=cal)
+            rows.append(f"ULX3S board top{', CAL = 1 (the table built in)' if cal else ''}: {_synth_line(synth, r)}")
+        except synth.FlowError as err:
+            rows.append(f"ULX3S board top{', CAL = 1' if cal else ''}: FAILED: {err}")
+    rows.append("iCEBreaker: no table (it builds the board without the fine position, FINE = 0); "
+                "prenc_edge_capture is built on every board")
+    return rows
 
 
 def ceiling_section() -> None:
