@@ -26,7 +26,7 @@ extern "C" {
 #define PRENC_WB__VERSION__MINOR_bm 0xff00
 #define PRENC_WB__VERSION__MINOR_bp 8
 #define PRENC_WB__VERSION__MINOR_bw 8
-#define PRENC_WB__VERSION__MINOR_reset 0x2
+#define PRENC_WB__VERSION__MINOR_reset 0x3
 #define PRENC_WB__VERSION__MAJOR_bm 0xff0000
 #define PRENC_WB__VERSION__MAJOR_bp 16
 #define PRENC_WB__VERSION__MAJOR_bw 8
@@ -42,6 +42,9 @@ extern "C" {
 #define PRENC_WB__PARAMS__FINE_bm 0x200
 #define PRENC_WB__PARAMS__FINE_bp 9
 #define PRENC_WB__PARAMS__FINE_bw 1
+#define PRENC_WB__PARAMS__CAL_bm 0x400
+#define PRENC_WB__PARAMS__CAL_bp 10
+#define PRENC_WB__PARAMS__CAL_bw 1
 #define PRENC_WB__PARAMS__FILTER_bm 0xffff0000
 #define PRENC_WB__PARAMS__FILTER_bp 16
 #define PRENC_WB__PARAMS__FILTER_bw 16
@@ -209,6 +212,18 @@ extern "C" {
 #define PRENC_WB__SNAP_VELOCITY__VELOCITY_bp 0
 #define PRENC_WB__SNAP_VELOCITY__VELOCITY_bw 32
 
+// reg - prenc_wb::CAL_ADDR
+#define PRENC_WB__CAL_ADDR__ADDRESS_bm 0x3ffff
+#define PRENC_WB__CAL_ADDR__ADDRESS_bp 0
+#define PRENC_WB__CAL_ADDR__ADDRESS_bw 18
+#define PRENC_WB__CAL_ADDR__ADDRESS_reset 0x0
+
+// reg - prenc_wb::CAL_DATA
+#define PRENC_WB__CAL_DATA__WORD_bm 0xffff
+#define PRENC_WB__CAL_DATA__WORD_bp 0
+#define PRENC_WB__CAL_DATA__WORD_bw 16
+#define PRENC_WB__CAL_DATA__WORD_reset 0x0
+
 // addrmap - prenc_wb
 typedef struct __attribute__ ((__packed__)) {
     uint32_t ID;
@@ -235,10 +250,12 @@ typedef struct __attribute__ ((__packed__)) {
     uint32_t VELOCITY;
     uint32_t SNAP_FINE_POS;
     uint32_t SNAP_VELOCITY;
+    uint32_t CAL_ADDR;
+    uint32_t CAL_DATA;
 } prenc_wb_t;
 
 
-static_assert(sizeof(prenc_wb_t) == 0x60, "Packing error");
+static_assert(sizeof(prenc_wb_t) == 0x68, "Packing error");
 
 #ifdef __cplusplus
 }

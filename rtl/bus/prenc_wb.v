@@ -13,6 +13,7 @@
 //   0x38 IRQ_STATUS (write 1 to clear)   0x3C IRQ_ENABLE
 //   0x40 SNAP_POS_HYB  0x44 SNAP_STATUS  0x48 SNAP_INCREMENTAL  0x4C SNAP_TIME
 //   0x50 FINE_POS  0x54 VELOCITY  0x58 SNAP_FINE_POS  0x5C SNAP_VELOCITY
+//   0x60 CAL_ADDR  0x64 CAL_DATA (the calibration table, CAL = 1)
 //
 // Bus: classic Wishbone B4 slave, word addresses (wb_adr_i = byte offset / 4, as
 // LiteX's bus), one access per three clocks: ack one clock after cyc & stb, with the
@@ -29,6 +30,11 @@
 // (LOOKAHEAD_HALVES = 2 (10 + FILTER) - 1; a live read is one clock older). VELOCITY is
 // prenc_velocity's in quarters per clock x 2^32, signed, saturating at 32 bits.
 //
+// Calibration table (CAL = 1, docs/calibration.md): a write to CAL_DATA writes its bits
+// 15:0 into the table's word CAL_ADDR (modulo the table's 4 x 2^N words; it counts from
+// the next clock) and adds 1 to CAL_ADDR: load a table with CAL_ADDR = 0, then its words
+// in order. CAL_ADDR and CAL_DATA take whole words (wb_sel_i[0] as for the others).
+//
 // Interrupt: IRQ_STATUS.lost_valid is set when pos_valid falls, .mode_change when mode
 // changes (an event beats a clear on the same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
 //
@@ -37,7 +43,9 @@
 // SCORE_LIMIT, CONV_REG, passed to it as they are; the counters are 32-bit and 16-bit,
 // as the map), checked there; N <= 24 fits the map's fields. FINE (1: prenc_fine is
 // built; 0: not, FINE_POS reads POS_HYB and VELOCITY 0), FINE_BITS (0..8, default 8;
-// N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048).
+// N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048),
+// CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
+// CAL_FILE (the table it starts with; "" : all zero).
 
 `resetall
 `timescale 1ns / 1ps
@@ -60,7 +68,9 @@ module prenc_wb #(
   parameter integer FINE            = 1,
   parameter integer FINE_BITS       = (FINE == 1) ? 8 : 0,
   parameter integer EXTRAPOLATE     = 1,
-  parameter integer VELOCITY_WINDOW = 2048
+  parameter integer VELOCITY_WINDOW = 2048,
+  parameter integer CAL             = 0,
+  parameter         CAL_FILE        = ""
 ) (
   input  wire         clk,
   input  wire         rst,
@@ -111,9 +121,11 @@ module prenc_wb #(
   localparam [4:0] A_VELOCITY         = 5'h15;
   localparam [4:0] A_SNAP_FINE_POS    = 5'h16;
   localparam [4:0] A_SNAP_VELOCITY    = 5'h17;
+  localparam [4:0] A_CAL_ADDR         = 5'h18;
+  localparam [4:0] A_CAL_DATA         = 5'h19;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_0200;  // 0.2.0
+  localparam [31:0] VERSION = 32'h0000_0300;  // 0.3.0
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n
@@ -128,6 +140,11 @@ module prenc_wb #(
       initial $display("ERROR: %m: parameter FINE_BITS = %0d (N + 2 + it <= 32; 0 with FINE = 0)",
                        FINE_BITS);
       prenc_wb_parameter_FINE_BITS_out_of_range u_stop ();
+    end
+    if (CAL != 0 && (CAL != 1 || FINE != 1 || N > 16)) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0, or 1 with FINE = 1 and N <= 16",
+                       CAL);
+      prenc_wb_parameter_CAL_must_be_0_or_1_with_FINE_1 u_stop ();
     end
     if (EXTRAPOLATE < 0 || EXTRAPOLATE > 1) begin : g_bad_extrapolate
       initial $display("ERROR: %m: parameter EXTRAPOLATE = %0d must be 0 or 1", EXTRAPOLATE);
@@ -217,12 +234,20 @@ module prenc_wb #(
   wire         velocity_valid;
   wire [31:0]  velocity_word;  // quarters per clock x 2^32, saturated
 
+  // The calibration table's writes (CAL_DATA), a clock after the bus write.
+  reg  [17:0]  cal_addr;
+  reg          cal_write;
+  reg  [N+1:0] cal_address;
+  reg  [15:0]  cal_data;
+
   prenc_fine #(
     .N                (N),
     .FINE_BITS        (FINE_BITS),
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (VELOCITY_WINDOW),
-    .ENABLE           (FINE)
+    .ENABLE           (FINE),
+    .CAL              (CAL),
+    .CAL_FILE         (CAL_FILE)
   ) u_fine (
     .clk            (clk),
     .rst            (rst),
@@ -231,9 +256,9 @@ module prenc_wb #(
     .step           (sync_step),
     .step_cw        (direction),
     .illegal        (sync_illegal),
-    .cal_write      (1'b0),
-    .cal_address    ({(N + 2){1'b0}}),
-    .cal_data       (16'd0),
+    .cal_write      (cal_write),
+    .cal_address    (cal_address),
+    .cal_data       (cal_data),
     .fine_pos       (fine_pos),
     .fine_valid     (fine_valid),
     .interpolated   (interpolated),
@@ -273,6 +298,8 @@ module prenc_wb #(
       last_valid   <= 1'b0;
       last_mode    <= 3'd0;
       wb_ack_o     <= 1'b0;
+      cal_addr     <= 18'd0;
+      cal_write    <= 1'b0;
     end else begin
       timestamp    <= timestamp + 1'b1;
       last_valid   <= pos_valid;
@@ -282,6 +309,13 @@ module prenc_wb #(
       snapshot     <= write0 && wb_adr_i == A_CTRL && wb_dat_i[2];
       if (write0 && wb_adr_i == A_CTRL) resolution <= wb_dat_i[0];
       if (write0 && wb_adr_i == A_IRQ_ENABLE) irq_enable <= wb_dat_i[1:0];
+      cal_write <= (CAL == 1) && write0 && wb_adr_i == A_CAL_DATA;
+      if (write0 && wb_adr_i == A_CAL_DATA) begin
+        cal_address <= cal_addr[N+1:0];
+        cal_data    <= wb_dat_i[15:0];
+        cal_addr    <= cal_addr + 18'd1;
+      end
+      if (write0 && wb_adr_i == A_CAL_ADDR) cal_addr <= wb_dat_i[17:0];
       if (write0 && wb_adr_i == A_IRQ_STATUS) begin
         irq_status <= (irq_status & ~wb_dat_i[1:0]) | events;
       end else begin
@@ -327,7 +361,8 @@ module prenc_wb #(
       case (wb_adr_i)
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
-        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 6'd0, FINE[0], FINE_BITS[3:0], N[4:0]};
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 5'd0, CAL[0], FINE[0], FINE_BITS[3:0],
+                                         N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};
         A_STATUS:           wb_dat_o <= {24'd0, status};
         A_POSITION:         wb_dat_o <= {{(30 - N){1'b0}}, position};
@@ -349,13 +384,14 @@ module prenc_wb #(
         A_VELOCITY:         wb_dat_o <= velocity_word;
         A_SNAP_FINE_POS:    wb_dat_o <= snap_fine_word;
         A_SNAP_VELOCITY:    wb_dat_o <= snap_velocity;
+        A_CAL_ADDR:         wb_dat_o <= (CAL == 1) ? {14'd0, cal_addr} : 32'd0;
         default:            wb_dat_o <= 32'd0;
       endcase
     end
   end
 
   assign wb_err_o = 1'b0;
-  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:3], sync_step, sync_illegal, fine_valid,
+  wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:18], sync_step, sync_illegal, fine_valid,
                      interpolated, accel, velocity};
   assign irq      = |(irq_status & irq_enable);
 

@@ -38,7 +38,10 @@ from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 from common import PERIOD_NS, drive_events, rng, to_int_x_as_zero
 from prenc.codes.debruijn import Code
 from prenc.core.predictor import taps_mask
+from prenc.cal.table import Table
 from prenc.core.reader import Reader
+from prenc.virtual.edge_timing import true_corrections
+from prenc.virtual.fine_bench import PRINTED
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.scenarios import scenarios
 from prenc.virtual.trajectory import Trajectory
@@ -251,7 +254,16 @@ async def registers_after_reset_and_writes(dut):
             await bench.access(reg.address, 0xFFFF_FFFF)
     for name, value in before.items():
         assert (await bench.access(getattr(regs, name).address))[0] == value, name
-    for offset in range(0x60, MAP_END, 4):
+    # CAL_ADDR: read back with the calibration table (CAL = 1), 0 without; CAL_DATA reads 0.
+    cal = int(dut.CAL.value)
+    assert await regs.PARAMS.cal.read() == cal
+    for value in (0x2_5A5A, 7, 0):
+        await regs.CAL_ADDR.write(value)
+        assert await regs.CAL_ADDR.read() == (value if cal else 0)
+    await regs.CAL_DATA.write(0x1234)
+    assert (await bench.access(regs.CAL_DATA.address))[0] == 0
+    assert await regs.CAL_ADDR.read() == (1 if cal else 0)
+    for offset in range(0x68, MAP_END, 4):
         await bench.access(offset, 0xFFFF_FFFF)
         assert (await bench.access(offset))[0] == 0, f"offset {offset:#x}"
     assert int(dut.wb_err_o.value) == 0
@@ -403,6 +415,53 @@ async def the_snapshot_holds_the_fine_position_and_velocity_of_its_clock(dut):
     assert max(map(abs, v_errors)) <= 0.0005
 
 
+@cocotb.test()
+async def a_calibration_table_loaded_over_the_bus_corrects_the_fine_position(dut):
+    """A printed disc turning steadily (CAL = 1, the table empty): snapshots of the fine
+    position against the true angle, before the table, and after it is written over the
+    bus (CAL_ADDR = 0, then its words into CAL_DATA) as a perfect calibration would make
+    it from the disc's definition (prenc.virtual.edge_timing), less its zero."""
+    if not int(dut.CAL.value):
+        dut._log.info("built without the calibration table (CAL = 0): nothing to load")
+        return
+    n, fine_bits = len(dut.pos_hyb) - 2, int(dut.FINE_BITS.value)
+    r = rng()
+    c = true_corrections(PRINTED, n)
+    table = Table.from_quarters(n, c - c.mean())
+    zero = -float(c.mean()) / 4           # the table's zero against the shaft's, slots
+    speed = 0.003 * r.uniform(0.8, 1.2)   # slots per clock
+    settle = int((n + 8) / speed) + 4 * 2048
+    traj = Trajectory(clk_hz=1, start=r.uniform(0, 1 << n)).constant(speed, 2 * settle + 30_000)
+    enc = VirtualEncoder(Disc(n, printing=PRINTED)).run(traj)
+    bench = Bench(dut)
+    await bench.start(enc)
+    regs = bench.regs
+    length = 1 << n
+
+    async def snapshots(count: int, offset: float) -> list[float]:
+        out = []
+        for _ in range(count):
+            ctrl, _ = await bench.access(regs.CTRL.address)
+            _, s = await bench.access(regs.CTRL.address, ctrl | 0b100)
+            fine = await regs.SNAP_FINE_POS.read()
+            err = fine / (4 << fine_bits) - traj.theta[s + 1] - offset
+            out.append((err + length / 2) % length - length / 2)
+            await bench.clocks(r.randrange(100, 300))
+        return out
+    await bench.clocks(settle)
+    before = await snapshots(15, 0.0)
+    await regs.CAL_ADDR.write(0)
+    for word in table.c.tolist():
+        await regs.CAL_DATA.write(word & 0xFFFF)
+    assert await regs.CAL_ADDR.read() == len(table.c)
+    await bench.clocks(settle)           # windows measured with the table
+    after = await snapshots(15, zero)
+    rms = [(sum(e * e for e in x) / len(x)) ** 0.5 for x in (before, after)]
+    dut._log.info("fine position against the truth: %.4f slot RMS without the table, %.5f with it",
+                  *rms)
+    assert rms[0] > 0.05 and rms[1] <= 1 / 128 and max(map(abs, after)) <= 1 / 64
+
+
 def wb_parameters(n: int, filter_len: int) -> dict:
     return {"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": filter_len, "ROM_FILE": rom_file(n)}
 
@@ -424,6 +483,15 @@ def regmap_env():
 def test_prenc_wb_verilator(n, filter_len):
     with regmap_env() as env:
         run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(n, filter_len), extra_env=env)
+
+
+@pytest.mark.parametrize("simulator", ["verilator", "icarus"])
+def test_prenc_wb_with_a_calibration_table(simulator):
+    tests = "registers_after_reset_and_writes|a_calibration_table_loaded_over_the_bus_corrects_the_fine_position"
+    with regmap_env() as env:
+        run(__file__, TOPLEVEL, simulator, parameters=wb_parameters(6, 2) | {"CAL": 1},
+            extra_env={**env, "COCOTB_TEST_FILTER": tests if simulator == "verilator"
+                       else "registers_after_reset_and_writes"})
 
 
 def test_prenc_wb_icarus_smoke():
