@@ -12,9 +12,10 @@
 // gives both blocks the true places of their quarters' edges:
 // - the decoder's quarter, pos_hyb plus the steps pos_hyb does not show yet (this
 //   cycle's and the three before: pos_hyb follows the decoder by 4 clocks), goes to
-//   the table, which gives c[q] and c[q + 1] one clock later;
-// - so prenc_velocity takes the decoder's step, direction and illegal transition one
-//   clock late, with those corrections, and prenc_fine_position takes them 3 clocks
+//   the table, which gives c[q] and c[q + 1] one clock later, registered once more
+//   (the block RAM's output is slow);
+// - so prenc_velocity takes the decoder's step, direction and illegal transition two
+//   clocks late, with those corrections, and prenc_fine_position takes them 2 clocks
 //   later again, when pos_hyb shows that quarter;
 // - the corrections count only while the table holds both words and pos_valid held
 //   when the quarter was asked (else 0: the nominal edges).
@@ -104,16 +105,19 @@ module prenc_fine #(
       wire [15:0] f_c_hi;
 
       if (CAL == 1) begin : g_cal
-        reg          late_step_reg;      // the decoder's outputs, one clock late
-        reg          late_cw_reg;
-        reg          late_illegal_reg;
-        reg          late_valid_reg;
+        reg          late_step_0_reg;    // the decoder's outputs, one and two clocks late
+        reg          late_cw_0_reg;
+        reg          late_illegal_0_reg;
+        reg          late_valid_0_reg;
+        reg          late_step_1_reg;
+        reg          late_cw_1_reg;
+        reg          late_illegal_1_reg;
+        reg  [15:0]  c_lo_reg;           // the table's answer, registered (gated)
+        reg  [15:0]  c_hi_reg;
         reg  [15:0]  pos_lo_0_reg;       // the corrections on their way to the fine
         reg  [15:0]  pos_hi_0_reg;       // position (registers, not arrays: Yosys would
         reg  [15:0]  pos_lo_1_reg;       // read arrays as memories)
         reg  [15:0]  pos_hi_1_reg;
-        reg  [15:0]  pos_lo_2_reg;
-        reg  [15:0]  pos_hi_2_reg;
         wire [N+1:0] quarter;
 
         prenc_decoder_quarter #(
@@ -130,7 +134,7 @@ module prenc_fine #(
         wire [15:0]  c_lo;
         wire [15:0]  c_hi;
         wire         c_ok;
-        wire         used = c_ok & late_valid_reg;
+        wire         used = c_ok & late_valid_0_reg;
 
         prenc_cal_lookup #(
           .N        (N),
@@ -148,37 +152,43 @@ module prenc_fine #(
         );
 
         always @(posedge clk) begin
-          late_step_reg    <= step;
-          late_cw_reg      <= step_cw;
-          late_illegal_reg <= illegal;
-          late_valid_reg   <= pos_valid;
-          pos_lo_0_reg     <= v_c_lo;
-          pos_hi_0_reg     <= v_c_hi;
-          pos_lo_1_reg     <= pos_lo_0_reg;
-          pos_hi_1_reg     <= pos_hi_0_reg;
-          pos_lo_2_reg     <= pos_lo_1_reg;
-          pos_hi_2_reg     <= pos_hi_1_reg;
+          late_step_0_reg    <= step;
+          late_cw_0_reg      <= step_cw;
+          late_illegal_0_reg <= illegal;
+          late_valid_0_reg   <= pos_valid;
+          late_step_1_reg    <= late_step_0_reg;
+          late_cw_1_reg      <= late_cw_0_reg;
+          late_illegal_1_reg <= late_illegal_0_reg;
+          c_lo_reg           <= used ? c_lo : 16'd0;
+          c_hi_reg           <= used ? c_hi : 16'd0;
+          pos_lo_0_reg       <= c_lo_reg;
+          pos_hi_0_reg       <= c_hi_reg;
+          pos_lo_1_reg       <= pos_lo_0_reg;
+          pos_hi_1_reg       <= pos_hi_0_reg;
           if (rst) begin
-            late_step_reg    <= 1'b0;
-            late_cw_reg      <= 1'b1;
-            late_illegal_reg <= 1'b0;
-            late_valid_reg   <= 1'b0;
-            pos_lo_0_reg     <= 16'd0;
-            pos_hi_0_reg     <= 16'd0;
-            pos_lo_1_reg     <= 16'd0;
-            pos_hi_1_reg     <= 16'd0;
-            pos_lo_2_reg     <= 16'd0;
-            pos_hi_2_reg     <= 16'd0;
+            late_step_0_reg    <= 1'b0;
+            late_cw_0_reg      <= 1'b1;
+            late_illegal_0_reg <= 1'b0;
+            late_valid_0_reg   <= 1'b0;
+            late_step_1_reg    <= 1'b0;
+            late_cw_1_reg      <= 1'b1;
+            late_illegal_1_reg <= 1'b0;
+            c_lo_reg           <= 16'd0;
+            c_hi_reg           <= 16'd0;
+            pos_lo_0_reg       <= 16'd0;
+            pos_hi_0_reg       <= 16'd0;
+            pos_lo_1_reg       <= 16'd0;
+            pos_hi_1_reg       <= 16'd0;
           end
         end
 
-        assign v_step    = late_step_reg;
-        assign v_step_cw = late_cw_reg;
-        assign v_illegal = late_illegal_reg;
-        assign v_c_lo    = used ? c_lo : 16'd0;
-        assign v_c_hi    = used ? c_hi : 16'd0;
-        assign f_c_lo    = pos_lo_2_reg;
-        assign f_c_hi    = pos_hi_2_reg;
+        assign v_step    = late_step_1_reg;
+        assign v_step_cw = late_cw_1_reg;
+        assign v_illegal = late_illegal_1_reg;
+        assign v_c_lo    = c_lo_reg;
+        assign v_c_hi    = c_hi_reg;
+        assign f_c_lo    = pos_lo_1_reg;
+        assign f_c_hi    = pos_hi_1_reg;
       end else begin : g_nominal
         assign v_step    = step;
         assign v_step_cw = step_cw;

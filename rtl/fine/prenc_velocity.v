@@ -30,7 +30,8 @@
 //   2^-12 quarters: a window's length is the distance between its edges' true places,
 //   n + c(end) - c(start) clockwise, in 2^-12 quarters (the products 12 bits wider: a
 //   fit takes 24 clocks longer); overdue is half a quarter past the quarter's true
-//   width (1 to 1.875 quarters). With CAL = 0 they are not used.
+//   width (1 to 1.875 quarters, from the corrections of the clock before). With CAL = 0
+//   they are not used.
 //
 // One serial divider (prenc_divider) and a serial multiplier do the arithmetic: an
 // update takes FULL_CLOCKS; a step that comes while they are busy updates nothing.
@@ -242,9 +243,13 @@ module prenc_velocity #(
                                     $signed({c_lo_used[15], c_lo_used});
   wire signed [16:0]   extra = (width_diff < -17'sd2048) ? -17'sd2048 :
                                (width_diff > 17'sd1536) ? 17'sd1536 : width_diff;
-  wire signed [LB-1:0] overdue_level = OVERDUE +
-                                       ({{(LB - 17){extra[16]}}, extra} <<< (FRAC - CALB));
+  wire signed [LB-1:0] overdue_next = OVERDUE +
+                                      ({{(LB - 17){extra[16]}}, extra} <<< (FRAC - CALB));
+  reg signed [LB-1:0]  overdue_level;   // from the corrections of the clock before
   wire                 overdue = (lead_reg >= overdue_level) || (lead_reg <= -overdue_level);
+  always @(posedge clk) begin
+    overdue_level <= rst ? OVERDUE : overdue_next;
+  end
   wire                 timeout = (since_step_reg == TIMER_MAX);
   wire                 idle = (state_reg == S_IDLE);
   wire                 mul_done = (mul_left_reg == 6'd0);

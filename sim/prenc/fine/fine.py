@@ -7,10 +7,11 @@ With CAL = 1 (docs/calibration.md):
 
 - the decoder's quarter q(t) = pos_hyb(t) plus the steps pos_hyb does not show yet
   (this cycle's and the three before: pos_hyb follows the decoder by 4 clocks) goes to
-  the table, which gives c[q] and c[q + 1] one clock later;
-- so prenc_velocity takes the decoder's step, direction and illegal transition one
-  clock late, with those corrections (c_lo, c_hi);
-- prenc_fine_position takes them 3 clocks later again, when pos_hyb shows that quarter;
+  the table, which gives c[q] and c[q + 1] one clock later, registered once more (the
+  block RAM's output is slow);
+- so prenc_velocity takes the decoder's step, direction and illegal transition two
+  clocks late, with those corrections (c_lo, c_hi);
+- prenc_fine_position takes them 2 clocks later again, when pos_hyb shows that quarter;
 - the corrections count only while the table has both words and pos_valid held when
   the quarter was asked (else 0: the nominal edges).
 """
@@ -23,8 +24,10 @@ from .fine_position import FinePosition
 from .velocity import FRAC, Velocity
 
 CAL_BITS = 12      # the table's fractional bits (prenc.cal.table.FRAC)
-POS_DELAY = 3      # the table's output -> prenc_fine_position's (pos_hyb follows the
-                   # decoder by 4 clocks; the table answers in 1)
+LATE = 2           # the decoder's step -> prenc_velocity's, with the table (its answer,
+                   # registered)
+POS_DELAY = 2      # the velocity's corrections -> prenc_fine_position's (pos_hyb follows
+                   # the decoder by 4 clocks)
 
 
 class Fine:
@@ -41,7 +44,8 @@ class Fine:
         self._reset_pipeline()
 
     def _reset_pipeline(self) -> None:
-        self.late = (0, 1, 0, 0)                      # step, step_cw, illegal, pos_valid: 1 clock late
+        self.late = [(0, 1, 0, 0)] * LATE             # step, step_cw, illegal, pos_valid, late
+        self.c_reg = (0, 0)                           # the table's answer, gated, registered
         self.to_fine = [(0, 0)] * POS_DELAY           # corrections on their way
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, illegal: int,
@@ -52,13 +56,13 @@ class Fine:
             vel.clock(step, step_cw, illegal, rst)
             return
         look = self.lookup
-        used = look.ok and self.late[3]
-        c_lo, c_hi = (look.lo, look.hi) if used else (0, 0)
+        answer = (look.lo, look.hi) if look.ok and self.late[0][3] else (0, 0)
+        c_lo, c_hi = self.c_reg
         shift = FRAC - CAL_BITS
         f_lo, f_hi = self.to_fine[-1]
         fine.clock(pos_hyb, pos_valid, step, step_cw, vel.velocity, vel.valid, rst,
                    c_lo=f_lo << shift, c_hi=f_hi << shift)
-        late_step, late_cw, late_illegal, _ = self.late
+        late_step, late_cw, late_illegal, _ = self.late[-1]
         vel.clock(late_step, late_cw, late_illegal, rst, c_lo=c_lo, c_hi=c_hi)
         look.clock(self.decoder_quarter.quarter(pos_hyb, step, step_cw), write, address, data, rst)
         self.decoder_quarter.clock(step, step_cw, rst)
@@ -66,7 +70,8 @@ class Fine:
             self._reset_pipeline()
             return
         self.to_fine = [(c_lo, c_hi)] + self.to_fine[:-1]
-        self.late = (step, step_cw, illegal, pos_valid)
+        self.c_reg = answer
+        self.late = [(step, step_cw, illegal, pos_valid)] + self.late[:-1]
 
     # What the RTL's outputs show after the clock edge.
     @property

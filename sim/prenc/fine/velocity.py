@@ -150,6 +150,7 @@ class Velocity:
         self.zero_at = 0        # clocks from the last step to that zero
         self.moved = 0          # a step since reset, a stop or an illegal transition
         self.since_step = 0     # clocks since the last step (saturating)
+        self.overdue_level = OVERDUE   # the lead at which an edge is overdue (registered)
         self.lead = 0           # predicted travel since the last step, FRAC bits
         self.have_a = 0         # anchor A: the step that opened the current window
         self.x_a = 0
@@ -279,13 +280,8 @@ class Velocity:
             self.accel = -self.sign * quotient
             self.state = self.IDLE
 
-        # Overdue: 1.5 quarters, or half a quarter past the quarter's true width (from 1
-        # to 1.875 quarters: the lead saturates at 2).
-        extra = max(-(1 << (self.cal_bits - 1)), min(3 << (self.cal_bits - 3), c_hi - c_lo)) \
-            if self.cal_bits else 0
-        overdue = OVERDUE + (extra << (FRAC - self.cal_bits))
         if idle and not self.decaying and not step and not illegal and velocity != 0 \
-                and abs(self.lead) >= overdue:
+                and abs(self.lead) >= self.overdue_level:
             # Overdue: decay to 0 over a third of the time since the step.
             self.sign = _sign(velocity)
             start, num, den = 1, 3 * abs(velocity), self.since_step
@@ -353,5 +349,10 @@ class Velocity:
             self.step_speed = speed
 
         self.div.clock(start, num, den, cancel)
+        # Overdue from the next clock on: 1.5 quarters, or half a quarter past the
+        # quarter's true width (from 1 to 1.875 quarters: the lead saturates at 2).
+        extra = max(-(1 << (self.cal_bits - 1)), min(3 << (self.cal_bits - 3), c_hi - c_lo)) \
+            if self.cal_bits else 0
+        self.overdue_level = OVERDUE + (extra << (FRAC - self.cal_bits))
         self.velocity = v_n
         self.since_step, self.since_a, self.lead = since_step_n, since_a_n, lead_n
