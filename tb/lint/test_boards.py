@@ -147,3 +147,24 @@ def test_synth_rejects_malformed_seeds(argv, capsys):
         synth.main(argv)
     assert stop.value.code == 2
     assert "--seeds" in capsys.readouterr().err
+
+
+def test_a_calibration_table_that_does_not_fit_the_build_is_refused(tmp_path):
+    """make synth CAL=<file>: the table must be the reader's N and intact; a board built
+    without the fine position has no table at all."""
+    from prenc.cal.table import Table
+
+    ulx3s, icebreaker = synth.BOARDS["ulx3s"], synth.BOARDS["icebreaker"]
+    good = Table.zero(10).write(tmp_path / "n10.cal")
+    assert synth.cal_for(str(good), 10, ulx3s, tmp_path / "out")["CAL"] == 1
+    assert synth.cal_for("1", 10, ulx3s, tmp_path / "out") == {"CAL": 1}
+    with pytest.raises(synth.FlowError, match="for a disc of N = 10, the reader has N = 12"):
+        synth.cal_for(str(good), 12, ulx3s, tmp_path / "out")
+    corrupt = tmp_path / "corrupt.cal"
+    corrupt.write_text(good.read_text().replace("\n0000\n", "\n0001\n", 1))
+    with pytest.raises(synth.FlowError, match="corrupt"):
+        synth.cal_for(str(corrupt), 10, ulx3s, tmp_path / "out")
+    with pytest.raises(synth.FlowError, match="no such file"):
+        synth.cal_for(str(tmp_path / "missing.cal"), 10, ulx3s, tmp_path / "out")
+    with pytest.raises(synth.FlowError, match="without the fine position"):
+        synth.cal_for(str(good), 10, icebreaker, tmp_path / "out")
