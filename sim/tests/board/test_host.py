@@ -115,3 +115,12 @@ def test_plot_rejects_a_file_that_is_not_a_log(tmp_path, capsys):
     bad.write_text("a,b\n1,2\n")
     assert main(["host", "plot", str(bad)]) == 1
     assert "not a `prenc host log` file" in capsys.readouterr().err
+
+
+def test_calibrate_refuses_a_table_for_another_disc(board, tmp_path, capsys):
+    from prenc.cal.table import Table
+
+    table = Table.zero(6).write(tmp_path / "n6.cal")
+    assert main(["calibrate", "--port", board.port, "--load", str(table)]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("prenc calibrate: error: calibration table") and "N = 6, the reader has N = 10" in err
