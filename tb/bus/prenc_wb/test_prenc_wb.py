@@ -459,7 +459,10 @@ async def a_calibration_table_loaded_over_the_bus_corrects_the_fine_position(dut
     rms = [(sum(e * e for e in x) / len(x)) ** 0.5 for x in (before, after)]
     dut._log.info("fine position against the truth: %.4f slot RMS without the table, %.5f with it",
                   *rms)
-    assert rms[0] > 0.05 and rms[1] <= 1 / 128 and max(map(abs, after)) <= 1 / 64
+    # Before: the printed disc's errors where the snapshots were taken (the eccentricity's
+    # share depends on the stretch of the turn); after: issue 38's goal.
+    assert rms[0] > 0.02 and rms[0] > 10 * rms[1], rms
+    assert rms[1] <= 1 / 128 and max(map(abs, after)) <= 1 / 64
 
 
 def wb_parameters(n: int, filter_len: int) -> dict:
