@@ -25,7 +25,7 @@ With a calibration table (issue 38), `c_lo` and `c_hi` are the corrections of
 pos_hyb's quarter's edges: the fraction starts at the crossed edge's true place and is
 clamped to the quarter's true span [c_lo, 1 + c_hi), so the fine position leaves the
 verified quarter by at most the table's largest correction (plus the extrapolation).
-They are 0 without a table, which is all the RTL has yet.
+They are 0 without a table (CAL = 0).
 
 Three register stages, so that no two long carry chains follow each other: (A) the
 fraction clamped (by its bits: it lies in (-2, 3) quarters), with pos_hyb and the

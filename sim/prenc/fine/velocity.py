@@ -51,8 +51,9 @@ With a calibration table (cal_bits = 12; issue 38, docs/calibration.md), a windo
 length is the distance between its edges' true places, in 2^-12 quarters: n + c(end)
 - c(start) clockwise, from the corrections `c_lo` and `c_hi` of the decoder's
 quarter's edges. The arithmetic is the same with 12 more bits in the products (a fit
-takes 24 clocks longer). The RTL does not have this yet: with cal_bits = 0, the
-default, the model is what rtl/fine/prenc_velocity.v does, clock for clock.
+takes 24 clocks longer): prenc_velocity with CAL = 1. The edge is overdue half a quarter
+past the quarter's true width (a registered level, from the corrections of the clock
+before). prenc.fine.fine.Fine gives it the corrections, as prenc_fine does.
 
 One serial divider (a quotient bit per clock) and one serial multiplier (a bit of the
 multiplier per clock) do the arithmetic, so an update takes FULL_CLOCKS; a step that
