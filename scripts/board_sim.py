@@ -38,7 +38,6 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tb"), str(REPO / "sim")]
 
-from prenc.virtual.fine_bench import PRINTED  # noqa: E402
 from prenc.virtual.profiles import PROFILES  # noqa: E402
 from prenc.virtual.encoder import Disc  # noqa: E402
 from runner import rom_file, run  # noqa: E402

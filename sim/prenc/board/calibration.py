@@ -30,7 +30,6 @@ from typing import Iterable, TextIO
 
 from ..cal.calibrate import CalibrationError, Record, calibrate
 from ..cal.table import Table, TableError, read
-from . import protocol
 from .host import DEFAULT_BAUD, Board, HostError
 from .protocol import Answer, Kind
 

@@ -20,10 +20,10 @@ from __future__ import annotations
 
 from ..cal.decoder_quarter import DecoderQuarter
 from ..cal.lookup import CalLookup
+from ..cal.table import FRAC as CAL_BITS   # the table's fractional bits
 from .fine_position import FinePosition
 from .velocity import FRAC, Velocity
 
-CAL_BITS = 12      # the table's fractional bits (prenc.cal.table.FRAC)
 LATE = 2           # the decoder's step -> prenc_velocity's, with the table (its answer,
                    # registered)
 POS_DELAY = 2      # the velocity's corrections -> prenc_fine_position's (pos_hyb follows
