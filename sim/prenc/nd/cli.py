@@ -2,6 +2,8 @@
 """`prenc nd`: (n,d)-sequences, parallel phasing, the imaging experiment, decoder ROMs.
 
     prenc nd search  --n N --d D [--method exact|algorithm1|lfsr] [--length K] [--time-limit S] [--json]
+    prenc nd search  --n N --d D --method sat [--length K | --at-least K] [--time-limit S]
+                     [--solver NAME] [--no-symmetry] [--proof FILE] [--check-proof] [--cnf FILE] [--json]
     prenc nd table   --max-n M [--min-n 3] [--time-limit S] [--json | --markdown] [--no-sequences]
     prenc nd phase   --sequence 0110... [--sequence ...] --n N [--json]
     prenc nd phase   --disc [--bits N] [--json]
@@ -40,9 +42,63 @@ def _check_nd(n: int, d: int) -> None:
         raise ValueError(f"distance d = {d} is out of range 1..n")
 
 
+def cmd_search_sat(args) -> None:
+    """--method sat: one question (--length, --at-least), or the longest and the best bound."""
+    from .sat import Instance, settle, solve
+
+    n, d = args.n, args.d
+    if args.length is not None and args.at_least is not None:
+        raise ValueError("give --length or --at-least, not both")
+    if args.length is None and args.at_least is None:
+        if args.proof or args.check_proof or args.cnf:
+            raise ValueError("--proof, --check-proof and --cnf need one question: --length or --at-least")
+        built = best_lfsr(n, d)
+
+        def progress(r) -> None:
+            if not args.json:
+                sys.stderr.write(f"{r.instance.question}: {r.status} [{r.seconds:.1f} s]\n")
+
+        res = settle(n, d, sequence=built.sequence if built else None, time_limit=args.time_limit,
+                     solver=args.solver, symmetry=not args.symmetry_off, progress=progress)
+        if args.json:
+            print(json.dumps(res.as_dict()))
+            return
+        status = "proven maximal" if res.exact else "a lower bound"
+        print(f"({n},{d})-sequence of length {res.lower} ({status}); upper bound {res.upper} "
+              f"({res.upper_reason}); minimum window distance {check(res.sequence, n, d)} (checked)")
+        print(res.sequence)
+        return
+    inst = Instance(n, d, args.length if args.length is not None else args.at_least,
+                    at_least=args.at_least is not None, symmetry=not args.symmetry_off)
+    res = solve(inst, time_limit=args.time_limit, solver=args.solver, proof_path=args.proof,
+                check_proof=args.check_proof, cnf_path=args.cnf)
+    if args.json:
+        print(json.dumps(res.as_dict()))
+    elif res.status == "sat":
+        print(f"{inst.question}: found, length {len(res.sequence)}; minimum window distance "
+              f"{check(res.sequence, n, d)} (checked) [{res.seconds:.1f} s, {res.solver}]")
+        print(res.sequence)
+    elif res.status == "unsat":
+        proof = {None: "", True: "; DRAT proof checked", False: "; DRAT proof REJECTED"}[res.proof_checked]
+        print(f"{inst.question}: none exists (UNSAT{proof}) [{res.seconds:.1f} s, {res.solver}, "
+              f"{res.variables} variables, {res.clauses} clauses]")
+    else:
+        print(f"{inst.question}: unknown, the time limit of {args.time_limit} s ran out")
+    if res.proof_checked is False:
+        raise ValueError("the solver's DRAT proof did not check")
+
+
 def cmd_search(args) -> None:
     n, d = args.n, args.d
     _check_nd(n, d)
+    if args.method == "sat":
+        cmd_search_sat(args)
+        return
+    for name in ("at_least", "proof", "cnf"):
+        if getattr(args, name):
+            raise ValueError(f"--{name.replace('_', '-')} needs --method sat")
+    if args.check_proof or args.symmetry_off or args.solver != "cadical195":
+        raise ValueError("--check-proof, --no-symmetry and --solver need --method sat")
     upper, reason = upper_bound(n, d)
     if args.length is not None:
         if not 1 <= args.length <= upper:
@@ -168,11 +224,21 @@ def add_parser(sub) -> None:
     search = cmds.add_parser("search", help="the longest (n,d)-sequence (or one of a given length)")
     search.add_argument("--n", type=int, required=True, help="window length n")
     search.add_argument("--d", type=int, required=True, help="minimum distance d between any two windows")
-    search.add_argument("--method", choices=["exact", "algorithm1", "lfsr"], default="exact",
+    search.add_argument("--method", choices=["exact", "algorithm1", "lfsr", "sat"], default="exact",
                         help="exact: DFS seeded by the best LFSR construction (default); algorithm1: the paper's "
-                             "breadth-first search; lfsr: the construction alone")
+                             "breadth-first search; lfsr: the construction alone; sat: a SAT solver (PySAT) on "
+                             "the de Bruijn graph, which also proves that none exists")
     search.add_argument("--length", type=int, help="find a sequence of exactly this length instead")
-    search.add_argument("--time-limit", type=float, default=60.0, help="seconds (default 60)")
+    search.add_argument("--at-least", type=int, help="sat: is there a sequence of this length or longer?")
+    search.add_argument("--time-limit", type=float, default=60.0,
+                        help="seconds (default 60); for sat, of each question")
+    search.add_argument("--solver", default="cadical195", help="sat: the PySAT solver (default cadical195)")
+    search.add_argument("--no-symmetry", dest="symmetry_off", action="store_true",
+                        help="sat: no symmetry breaking (complement, reversal)")
+    search.add_argument("--proof", help="sat: write the solver's DRAT proof of an UNSAT answer to this file")
+    search.add_argument("--check-proof", action="store_true",
+                        help="sat: check the DRAT proof of an UNSAT answer (dratify; small instances)")
+    search.add_argument("--cnf", help="sat: write the instance as DIMACS CNF, for any other solver")
     search.add_argument("--json", action="store_true")
     search.set_defaults(func=cmd_search)
 

@@ -9,7 +9,9 @@ de Bruijn sequence for d = 1, the best m-sequence otherwise), then the exact sea
   to the end, or the length meets the upper bound of `bounds`, the entry is proven
   maximal (`exact: true`);
 - when the time limit stops it, the entry is a lower bound (`exact: false`) and the
-  upper bound says how far the truth can be.
+  upper bound says how far the truth can be;
+- for the entries that long SAT runs worked on (`records`), a recorded sequence longer
+  than the construction and a recorded bound tighter than `bounds` are taken.
 
 Every sequence is checked by `sequence.min_distance`, an independent pairwise
 computation, before it is put in the table. JSON shape:
@@ -24,6 +26,7 @@ from dataclasses import dataclass
 from .bounds import upper_bound
 from .exact import exact_search
 from .lfsr_codes import best_lfsr
+from .records import RECORDS
 from .sequence import check
 
 # The two open entries the paper reports as lower bounds (the issue quotes them).
@@ -59,14 +62,18 @@ def entry(n: int, d: int, time_limit: float | None = 10.0, max_n: int | None = N
     start = time.perf_counter()
     upper, reason = upper_bound(n, d)
     built = best_lfsr(n, d, max_n)
-    lower = built.length if built else 0
-    result = exact_search(n, d, lower=lower, lower_sequence=built.sequence if built else None,
-                          upper=upper, time_limit=time_limit)
+    lower, lower_seq, method = (built.length, built.sequence, built.method) if built else (0, None, "")
+    record = RECORDS.get((n, d))
+    if record and record.sequence and len(record.sequence) > lower:
+        check(record.sequence, n, d)
+        lower, lower_seq, method = len(record.sequence), record.sequence, "recorded SAT run"
+    if record and record.upper is not None and record.upper < upper:
+        upper, reason = record.upper, record.upper_how
+    result = exact_search(n, d, lower=lower, lower_sequence=lower_seq, upper=upper,
+                          time_limit=time_limit)
     if result.sequence is None:
         raise AssertionError(f"no ({n},{d})-sequence found at all")
-    if built and result.length == built.length:
-        method = built.method
-    else:
+    if result.length > lower:
         method = "exact search"
     exact = result.exact or result.length >= upper
     distance = check(result.sequence, n, d)
@@ -95,7 +102,10 @@ def to_json(table, with_sequence: bool = True) -> dict:
 
 
 def to_markdown(table) -> str:
-    """The table as Markdown: L for proven maxima, >= L (<= U) for lower bounds."""
+    """The table as Markdown: L for proven maxima, >= L (<= U) for lower bounds.
+
+    "by SAT" marks a bound that a recorded SAT run proved (`records`).
+    """
     ds = sorted(next(iter(table.values())).keys())
     lines = ["| n | " + " | ".join(f"d = {d}" for d in ds) + " |",
              "|---|" + "---|" * len(ds)]
@@ -103,7 +113,11 @@ def to_markdown(table) -> str:
         cells = []
         for d in ds:
             e = row[d]
-            cell = f"{e.length}" if e.exact else f">= {e.length} (<= {e.upper})"
+            by_sat = " by SAT" if e.upper_reason.startswith("SAT") else ""
+            if e.exact:
+                cell = f"{e.length}" + (f" (proven{by_sat})" if by_sat else "")
+            else:
+                cell = f">= {e.length} (<= {e.upper}{by_sat})"
             if (n, d) in PAPER_OPEN:
                 cell += f" [paper: >= {PAPER_OPEN[(n, d)]}]"
             cells.append(cell)
