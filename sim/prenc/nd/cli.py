@@ -60,6 +60,8 @@ def cmd_search_sat(args) -> None:
 
         res = settle(n, d, sequence=built.sequence if built else None, time_limit=args.time_limit,
                      solver=args.solver, symmetry=not args.symmetry_off, progress=progress)
+        if res.sequence is None:
+            raise ValueError(f"no ({n},{d})-sequence found within {args.time_limit} s per question")
         if args.json:
             print(json.dumps(res.as_dict()))
             return
