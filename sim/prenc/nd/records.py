@@ -30,10 +30,10 @@ class Record:
 RECORDS: dict[tuple[int, int], Record] = {
     # (9,2) = 127: the m-sequences of degree 7 are maximal.
     (9, 2): Record(9, 2, 127, "SAT: no sequence of length >= 128 (prenc nd search --n 9 --d 2 "
-                   "--method sat --at-least 128: UNSAT in 272 s on one core, PySAT 1.9.dev24, "
+                   "--method sat --at-least 128 --time-limit 3600: UNSAT in 272 s on one core, PySAT 1.9.dev24, "
                    "CaDiCaL 1.9.5)"),
     # (10,2): 255 <= K <= 392; "at least 256" is still open (docs/nd-sequences.md).
     (10, 2): Record(10, 2, 392, "SAT: no sequence of length >= 393 (prenc nd search --n 10 --d 2 "
-                    "--method sat --at-least 393: UNSAT in 60 s on one core, PySAT 1.9.dev24, "
+                    "--method sat --at-least 393 --time-limit 600: UNSAT in 61 s on one core, PySAT 1.9.dev24, "
                     "CaDiCaL 1.9.5)"),
 }

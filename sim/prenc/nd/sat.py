@@ -30,7 +30,8 @@ Distance: two windows closer than d are never both chosen (one binary clause per
 Count (on by default): a totalizer (PySAT's `CardEnc`) says that at least K vertices
 are used (and at most K for an exact length). The index already implies it, but only
 once the cycle closes; the count lets the solver prune a branch as soon as too few
-vertices are left (5 times faster on "(8,2), at least 64").
+vertices are left (5 times faster on "(8,2), at least 64"; a cardinality network
+instead when the totalizer would pass 4 M clauses).
 
 Symmetry breaking (on by default): the complement, the reversal and both of an
 (n,d)-sequence are (n,d)-sequences of the same length. Of the four, the one whose
@@ -100,7 +101,8 @@ class SatResult:
     def as_dict(self) -> dict:
         inst = self.instance
         return {"n": inst.n, "d": inst.d, "length": inst.length, "at_least": inst.at_least,
-                "symmetry": inst.symmetry, "status": self.status, "sequence": self.sequence,
+                "symmetry": inst.symmetry, "count": inst.count, "status": self.status,
+                "sequence": self.sequence,
                 "found_length": len(self.sequence) if self.sequence else None,
                 "seconds": round(self.seconds, 3), "solver": self.solver,
                 "variables": self.variables, "clauses": self.clauses,
@@ -249,14 +251,15 @@ def encode(inst: Instance) -> tuple[list[list[int]], int, list[int], list[int]]:
         from pysat.card import CardEnc, EncType
         from pysat.formula import IDPool
 
+        # The totalizer grows as vertices x K; past 4 M clauses a cardinality network
+        # (vertices x log^2) is used instead.
+        kind = EncType.totalizer if vertices * inst.length <= 1 << 22 else EncType.cardnetwrk
         pool = IDPool(start_from=f.top + 1)
-        card = CardEnc.atleast(lits=list(used), bound=inst.length, vpool=pool,
-                               encoding=EncType.totalizer)
+        card = CardEnc.atleast(lits=list(used), bound=inst.length, vpool=pool, encoding=kind)
         f.clauses.extend(card.clauses)
         f.top = max(f.top, pool.top)
         if not inst.at_least:
-            card = CardEnc.atmost(lits=list(used), bound=inst.length, vpool=pool,
-                                  encoding=EncType.totalizer)
+            card = CardEnc.atmost(lits=list(used), bound=inst.length, vpool=pool, encoding=kind)
             f.clauses.extend(card.clauses)
             f.top = max(f.top, pool.top)
 
