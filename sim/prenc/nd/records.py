@@ -32,8 +32,8 @@ RECORDS: dict[tuple[int, int], Record] = {
     (9, 2): Record(9, 2, 127, "SAT: no sequence of length >= 128 (prenc nd search --n 9 --d 2 "
                    "--method sat --at-least 128 --time-limit 3600: UNSAT in 272 s on one core, PySAT 1.9.dev24, "
                    "CaDiCaL 1.9.5)"),
-    # (10,2): 255 <= K <= 392; "at least 256" is still open (docs/nd-sequences.md).
-    (10, 2): Record(10, 2, 392, "SAT: no sequence of length >= 393 (prenc nd search --n 10 --d 2 "
-                    "--method sat --at-least 393 --time-limit 600: UNSAT in 61 s on one core, PySAT 1.9.dev24, "
-                    "CaDiCaL 1.9.5)"),
+    # (10,2): 255 <= K <= 384; "at least 256" is still open (docs/nd-sequences.md).
+    (10, 2): Record(10, 2, 384, "SAT: no sequence of length >= 385 (prenc nd search --n 10 --d 2 "
+                    "--method sat --at-least 385 --time-limit 600: UNSAT in 186 s on one core, "
+                    "PySAT 1.9.dev24, CaDiCaL 1.9.5)"),
 }
