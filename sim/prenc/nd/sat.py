@@ -60,6 +60,7 @@ from .graph import sequence_of_cycle
 from .sequence import check
 
 SOLVERS = ("cadical195", "cadical153", "cadical300", "kissat404", "glucose4", "maplechrono")
+NO_PROOF = ("kissat404",)  # PySAT keeps no DRAT proof for these
 
 
 @dataclass(frozen=True)
@@ -350,6 +351,9 @@ def solve(inst: Instance, *, time_limit: float | None = None, solver: str = "cad
 
     if solver not in SOLVERS:
         raise ValueError(f"solver {solver!r} is not one of {', '.join(SOLVERS)}")
+    if (proof_path or check_proof) and solver in NO_PROOF:
+        raise ValueError(f"solver {solver} keeps no DRAT proof in PySAT; use cadical195 for --proof "
+                         "and --check-proof")
     if time_limit is not None and time_limit <= 0:
         raise ValueError(f"time limit {time_limit} s must be positive")
     start = time.perf_counter()

@@ -99,6 +99,8 @@ def test_bad_questions_are_refused():
         Instance(4, 5, 3)
     with pytest.raises(ValueError, match="solver 'nosuch'"):
         solve(Instance(4, 2, 4), solver="nosuch")
+    with pytest.raises(ValueError, match="kissat404 keeps no DRAT proof"):
+        solve(Instance(4, 2, 5, at_least=True), solver="kissat404", check_proof=True)
 
 
 def test_records_are_consistent_and_used_by_the_table():
