@@ -79,8 +79,10 @@ class Instance:
             raise ValueError(f"window length n = {self.n} is out of range 2..14 for the SAT search")
         if not 1 <= self.d <= self.n:
             raise ValueError(f"distance d = {self.d} is out of range 1..n")
-        if not 1 <= self.length <= 1 << self.n:
-            raise ValueError(f"length {self.length} is out of range 1..{1 << self.n}")
+        bound, reason = upper_bound(self.n, self.d)
+        if not 1 <= self.length <= bound:
+            raise ValueError(f"length {self.length} is out of range 1..{bound} for ({self.n},{self.d}) "
+                             f"({reason}): none longer exists")
 
     @property
     def question(self) -> str:
@@ -207,8 +209,6 @@ def encode(inst: Instance) -> tuple[list[list[int]], int, list[int], list[int]]:
     # Index width: the longest sequence the question allows (an upper bound is proven).
     longest = upper_bound(n, d)[0] if inst.at_least else inst.length
     width = max(1, (longest - 1).bit_length())
-    if inst.length - 1 >= 1 << width:
-        f.add([])  # longer than the proven bound allows: no solution
     last = _bits_of(inst.length - 1, width)
     idx = [f.vars(width) for _ in range(vertices)]
     for v in range(vertices):

@@ -37,8 +37,11 @@ def test_at_least_the_maximum_is_sat_and_one_more_is_unsat(n, d):
     found = solve(Instance(n, d, best, at_least=True))
     assert found.status == "sat" and len(found.sequence) == best
     assert check(found.sequence, n, d) >= d
-    if best < 1 << n:
+    if best < upper_bound(n, d)[0]:
         assert solve(Instance(n, d, best + 1, at_least=True)).status == "unsat"
+    else:  # the bound proves it, and a longer question is refused
+        with pytest.raises(ValueError, match="none longer exists"):
+            Instance(n, d, best + 1, at_least=True)
 
 
 @pytest.mark.parametrize("n,d", [(4, 1), (4, 2), (5, 1), (5, 2), (5, 3), (6, 2), (6, 3)])
@@ -93,8 +96,10 @@ def test_settle_proves_the_maximum_and_bisects_the_bound():
 
 
 def test_bad_questions_are_refused():
-    with pytest.raises(ValueError, match="length 17 is out of range"):
+    with pytest.raises(ValueError, match="length 17 is out of range 1..16"):
         Instance(4, 1, 17)
+    with pytest.raises(ValueError, match="length 300 is out of range 1..256 for"):
+        Instance(9, 2, 300, at_least=True)
     with pytest.raises(ValueError, match="distance d = 5"):
         Instance(4, 5, 3)
     with pytest.raises(ValueError, match="solver 'nosuch'"):
