@@ -301,22 +301,23 @@ def _decode(model: list[int], edge: list[int], m: int) -> str:
     return sequence_of_cycle(cycle, m)
 
 
+def dimacs(clauses: list[list[int]], variables: int, comment: str = "") -> str:
+    """The clauses as DIMACS CNF text, comment lines first."""
+    head = "".join(f"c {line}\n" for line in comment.splitlines())
+    body = "".join(" ".join(map(str, cl)) + " 0\n" for cl in clauses)
+    return f"{head}p cnf {variables} {len(clauses)}\n{body}"
+
+
 def write_dimacs(path: str, clauses: list[list[int]], variables: int, comment: str = "") -> None:
     with open(path, "w") as fh:
-        for line in comment.splitlines():
-            fh.write(f"c {line}\n")
-        fh.write(f"p cnf {variables} {len(clauses)}\n")
-        for cl in clauses:
-            fh.write(" ".join(map(str, cl)) + " 0\n")
+        fh.write(dimacs(clauses, variables, comment))
 
 
 def check_drat(clauses: list[list[int]], variables: int, proof: list[str]) -> bool:
     """True when the DRAT proof derives the empty clause from these clauses (dratify)."""
     from dratify import check_proof, parse_dimacs
 
-    text = f"p cnf {variables} {len(clauses)}\n" + "".join(" ".join(map(str, cl)) + " 0\n"
-                                                          for cl in clauses)
-    result = check_proof(parse_dimacs(text), "\n".join(proof) + "\n")
+    result = check_proof(parse_dimacs(dimacs(clauses, variables)), "\n".join(proof) + "\n")
     return bool(result.ok and result.reached_empty)
 
 

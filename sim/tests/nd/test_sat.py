@@ -20,19 +20,13 @@ from prenc.nd.records import RECORDS
 from prenc.nd.sat import Instance, check_drat, encode, settle, solve
 from prenc.nd.sequence import check
 from prenc.nd.table import PAPER_OPEN, entry
-
-# Maximum lengths for n = 3..8, d = 1..4 (proven by the exhaustive search, test_nd.py).
-TABLE1 = {
-    3: (8, 3, 2, 1), 4: (16, 4, 2, 2), 5: (32, 10, 3, 2), 6: (64, 15, 7, 3),
-    7: (128, 31, 14, 7), 8: (256, 63, 16, 8),
-}
+from test_nd import TABLE1  # the maxima for n = 3..8, proven by the exhaustive search
 
 
-@pytest.mark.parametrize("n", [3, 4, 5, 6, 7])
-@pytest.mark.parametrize("d", [1, 2, 3, 4])
+
+
+@pytest.mark.parametrize("n,d", [(n, d) for n in range(3, 8) for d in range(1, 5) if d <= n])
 def test_at_least_the_maximum_is_sat_and_one_more_is_unsat(n, d):
-    if d > n:
-        pytest.skip("d > n")
     best = TABLE1[n][d - 1]
     found = solve(Instance(n, d, best, at_least=True))
     assert found.status == "sat" and len(found.sequence) == best
