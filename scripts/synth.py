@@ -312,7 +312,7 @@ def check_taps(bits: int) -> tuple[int, ...]:
 
 
 def taps_mask(taps: tuple[int, ...]) -> int:
-    from prenc.core.predictor import taps_mask as mask
+    from prenc.codes.lfsr import taps_mask as mask
 
     return mask(taps)
 

@@ -4,8 +4,8 @@
 // word = W(p), the MSB is s(p) (datasheet). With the de Bruijn term in brackets:
 //   forward  s(p+N) = XOR_{t in T} s(p+N-t) ^ [s(p+1..p+N-1) all zero]
 //   inverse  s(p-1) = s(p+N-1) ^ XOR_{t in T, t<N} s(p+N-1-t) ^ [s(p..p+N-2) all zero]
-// The one place these laws are written in the RTL: prenc_predictor (the datapath) and
-// prenc_track_word (the core) use it. Model: prenc.debruijn forward_bit / inverse_bit.
+// The one place these laws are written in the RTL: prenc_track_word uses it.
+// Model: prenc.debruijn forward_bit / inverse_bit.
 //
 // Parameters
 //   N      code word length, 2..24

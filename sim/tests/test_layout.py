@@ -98,7 +98,7 @@ def test_every_rtl_module_of_the_core_has_its_model():
     models = {p.stem for p in (PACKAGE / "core").glob("*.py")}
     for source in sorted((REPO / "rtl" / "core").glob("prenc_*.v")):
         stem = source.stem.removeprefix("prenc_")
-        # the law is inside track_word / predictor; core is reader.py; core_harness only
+        # the law is inside track_word; core is reader.py; core_harness only
         # places the core on a small package (synthesis), it reads nothing
         if stem in ("disc_law", "core", "core_harness"):
             continue

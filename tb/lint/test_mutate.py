@@ -59,7 +59,7 @@ def test_a_mutant_that_runs_too_long_is_reported_and_the_others_go_on(tmp_path, 
         raise subprocess.TimeoutExpired(args[0], mutate.TIMEOUT_S)
 
     monkeypatch.setattr(mutate.subprocess, "run", too_long)
-    proof = mutate.FORMAL / "prenc_shift_register.sby"
+    proof = mutate.FORMAL / "prenc_quadrature.sby"
     (tmp_path / proof.name).write_text(proof.read_text())
     index, _, verdict, _ = mutate.run_mutant(tmp_path / proof.name, tmp_path, 3, "mutate -mode inv")
     assert (index, verdict) == (3, "timeout")

@@ -22,7 +22,6 @@ from ..virtual.faults import ContaminatedSlot, DeadHead, TransientMisread
 from ..core.mode_fsm import Mode
 from ..core.reader import Step, events_from_run
 from ..virtual.scenarios import core_latency, judge, max_speed
-from ..core.shift_register import ShiftRegister
 from ..virtual.trajectory import Trajectory
 
 N = 10
@@ -71,23 +70,30 @@ def unprotected(enc: EncoderRun, filter_len: int = FILTER) -> tuple[int, int]:
     the raw leading-head readings, output as the position. Returns (strobes with a
     full word, of which wrong)."""
     code = Code(enc.disc.n)
-    word = ShiftRegister(code.n)
+    n, mask, msb = code.n, (1 << code.n) - 1, 1 << (code.n - 1)
+    word = known = 0  # the raw word from the leading head, and which of its bits were read
     have_last, last_cw = False, 0
     out = wrong = 0
     for ev in events_from_run(enc, filter_len):
-        if not isinstance(ev, Step):
-            word.clock(0, 0, 0, 0, 0, flush=1)
-            have_last = False
+        if not isinstance(ev, Step):  # an illegal transition: start the word again
+            known, have_last = 0, False
             continue
         if ev.quarter != (2 if ev.cw else 1):
             continue
-        moved = int(not have_last or ev.cw == last_cw)
+        moved = not have_last or ev.cw == last_cw
         have_last, last_cw = True, ev.cw
-        w = word.clock(1, ev.cw, moved, ev.head1, ev.head2)
-        if w.full:
+        if moved and ev.cw:  # to the next slot: shift left, head 2 enters as the LSB
+            word, known = ((word << 1) & mask) | ev.head2, ((known << 1) & mask) | 1
+        elif moved:  # to the previous slot: shift right, head 1 enters as the MSB
+            word, known = (word >> 1) | (ev.head1 << (n - 1)), (known >> 1) | msb
+        elif ev.cw and not known & 1:  # back over the same mid-slot point: fill that end
+            word, known = (word & ~1) | ev.head2, known | 1
+        elif not ev.cw and not known & msb:
+            word, known = (word & ~msb) | (ev.head1 << (n - 1)), known | msb
+        if known == mask:
             out += 1
             truth = int(enc.slot[ev.clock - 2 - filter_len])
-            wrong += code.position(w.word) != truth
+            wrong += code.position(word) != truth
     return out, wrong
 
 

@@ -26,7 +26,7 @@ from .. import __version__
 from ..codes.debruijn import Code
 from ..board.host import HostError
 from ..virtual.encoder import default_shift
-from ..core.predictor import taps_mask
+from ..codes.lfsr import taps_mask
 from ..codes.lfsr import MAX_BITS, MIN_BITS, TapsError, check_bits, check_taps, poly_str, polynomial
 from .arguments import bits_arg, taps_arg
 from ..codes.rom import FORMATS, ROM_MAX_BITS, ROM_MIN_BITS, TRACK_FORMATS, format_tracks, write_atomically, write_rom

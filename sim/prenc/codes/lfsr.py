@@ -199,6 +199,14 @@ def check_taps(n: int, taps: Iterable[int] | None = None) -> tuple[int, ...]:
     return values
 
 
+def taps_mask(taps: Iterable[int]) -> int:
+    """The RTL's TAPS parameter: bit t-1 set for each tap t."""
+    mask = 0
+    for t in taps:
+        mask |= 1 << (t - 1)
+    return mask
+
+
 def find_default_taps(n: int) -> tuple[int, ...]:
     """Search rule behind DEFAULT_TAPS (kept so the table can be regenerated)."""
     for t in range(1, n):

@@ -10,5 +10,5 @@
     mode_fsm           prenc_mode_fsm: the judge of the offset, modes, pos_valid
     reader             prenc_core: the whole reader core
     lock_depth         how deep a lock must be: undetectable error patterns per N, k, rate
-    predictor, shift_register, datapath  the first design's blocks (prenc_datapath)
+    front_end          the conditioner, decoder and sampler chained (prenc_core's front end)
 """

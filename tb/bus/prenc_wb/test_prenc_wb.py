@@ -37,7 +37,7 @@ from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 
 from common import PERIOD_NS, drive_events, rng, to_int_x_as_zero
 from prenc.codes.debruijn import Code
-from prenc.core.predictor import taps_mask
+from prenc.codes.lfsr import taps_mask
 from prenc.cal.table import Table
 from prenc.core.reader import Reader
 from prenc.virtual.edge_timing import true_corrections

@@ -34,7 +34,7 @@ from cocotb.triggers import FallingEdge, ReadOnly, RisingEdge
 from common import PERIOD_NS, drive_events, rng
 from prenc.codes.debruijn import Code
 from prenc.virtual.goals import SHORT_OF_GOAL, first_valid_travel, goals
-from prenc.core.predictor import taps_mask
+from prenc.codes.lfsr import taps_mask
 from prenc.core.reader import Reader
 from prenc.virtual.scenarios import core_latency, judge, must_lock, scenarios
 from runner import rom_file, run

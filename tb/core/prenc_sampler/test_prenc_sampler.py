@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_sampler: strobes, direction, `moved` and head readings, against the model.
 
-Inputs come from the datapath model chain on virtual-encoder runs with random
+Inputs come from the front-end model chain on virtual-encoder runs with random
 motion, dithering across A's edge and missed quadrature states (the chain itself is
-checked against the truth in sim/tests/core/test_datapath.py); the expected outputs from
+checked against the truth in sim/tests/core/test_front_end.py); the expected outputs from
 prenc.core.sampler.Sampler with the same JUMP (landing readings after a missed state: the
 core's sampler) and HEAD_DELAY (0: the step comes on the clock of the heads' sample, as
 the core gives it from the decoder's *_next outputs; 1: the decoder's registered step).
@@ -15,8 +15,7 @@ import pytest
 import cocotb
 
 from common import clock_and_check, rng
-from prenc.core.datapath import Datapath
-from prenc.codes.debruijn import Code
+from prenc.core.front_end import FrontEnd
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.faults import MissedQuadratureState
 from prenc.core.sampler import Sampler
@@ -35,7 +34,7 @@ def scenario(seed: int):
         traj.move_to(80.5, 0.02).move_to(80.49, 0.02)  # dither on A's edge
     traj.move_to(75.2, 0.2)
     enc = VirtualEncoder(Disc(10), faults=[MissedQuadratureState(count=30, seed=seed)]).run(traj)
-    return Datapath(Code(10), 0).run(enc, RESET)
+    return FrontEnd(0).run(enc, RESET)
 
 
 @cocotb.test()

@@ -2,9 +2,10 @@
 """Benchmark probe (run by scripts/bench.py, not by pytest): maximum tracking rate.
 
 For this build's FILTER, drive the sync pins with quadrature states that each last
-exactly `dwell` clocks: 64 states CW, then 128 CCW. A dwell passes when the step
-count is +64 after the first leg and -64 after the second and no transition was
-flagged illegal. Sweeps dwell = 1 .. FILTER + 3 and writes the verdicts to $BENCH_OUT.
+exactly `dwell` clocks: 64 states CW, then 128 CCW, into prenc_core (its
+conditioner and quadrature decoder). A dwell passes when the incremental count is +64
+after the first leg and -64 after the second and no transition was counted illegal.
+Sweeps dwell = 1 .. FILTER + 3 and writes the verdicts to $BENCH_OUT.
 """
 
 from __future__ import annotations
@@ -36,14 +37,14 @@ async def leg(dut, start_q: int, states: int, direction: int, dwell: int) -> int
 @cocotb.test()
 async def sweep_dwell(dut):
     filter_len = int(dut.FILTER.value)
-    width = len(dut.step_count)
+    width = len(dut.incremental)
     verdicts = {}
     first = True
     for dwell in range(1, filter_len + 4):
         a, b = AB_OF_QUARTER[0]
         if first:
             await start_clock_and_reset(dut, 4, {"sync_a": a, "sync_b": b, "head1": 0, "head2": 0,
-                                                 "clear_errors": 0, "flush": 0})
+                                                 "clear_errors": 0, "resolution": 0})
             first = False
         else:
             dut.sync_a.value, dut.sync_b.value, dut.rst.value = a, b, 1
@@ -53,12 +54,12 @@ async def sweep_dwell(dut):
             dut.rst.value = 0
         q = await leg(dut, 0, 64, +1, dwell)
         await ReadOnly()
-        forward = signed(int(dut.step_count.value), width)
+        forward = signed(int(dut.incremental.value), width)
         await FallingEdge(dut.clk)
         await leg(dut, q, 128, -1, dwell)
         await ReadOnly()
-        backward = signed(int(dut.step_count.value), width)
-        illegal = int(dut.illegal_count.value)
+        backward = signed(int(dut.incremental.value), width)
+        illegal = int(dut.sync_errors.value)
         verdicts[dwell] = {"forward": forward, "backward": backward, "illegal": illegal,
                            "ok": forward == 64 and backward == -64 and illegal == 0}
         await FallingEdge(dut.clk)

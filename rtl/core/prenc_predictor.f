@@ -1,5 +1,0 @@
-// SPDX-License-Identifier: Apache-2.0
-// Sources of prenc_predictor (verilator -F <this file>), relative to this folder;
-// a line `-F <list>` includes another top's list, relative to its own folder.
-prenc_disc_law.v
-prenc_predictor.v

@@ -1,4 +1,0 @@
-// SPDX-License-Identifier: Apache-2.0
-// Sources of prenc_shift_register (verilator -F <this file>), relative to this folder;
-// a line `-F <list>` includes another top's list, relative to its own folder.
-prenc_shift_register.v
