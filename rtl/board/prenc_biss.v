@@ -25,6 +25,10 @@
 //   frequency, 5 x for a margin); the master compensates the delay (BiSS line delay
 //   compensation), which may exceed a bit time.
 //
+// Latency: the frame's data are latched on the clock the synchronized MA first falls, 2
+// to 3 clocks after the pin; SLO follows each rising edge of MA by 3 to 4 clocks (the
+// master compensates it).
+//
 // Parameters
 //   DATA_BITS  multi-turn + single-turn bits, 1..64
 //   TIMEOUT    clocks without an MA edge that end a frame, 2..16777215 (must be longer

@@ -19,6 +19,11 @@
 // The board tops in constraints/<board>/ add the PLL, the power-on reset and the
 // pin names; this module is what the tests simulate (tb/prenc_board).
 //
+// Latency: the core's 6 + FILTER clocks from the pins to pos_hyb; the fine position and
+// velocity as prenc_fine; the SSI and BiSS-C frames send the fine position extrapolated
+// to the master's first falling edge (above), and the host link's answers the outputs
+// of the clock their frame starts.
+//
 // Parameters
 //   N, TAPS, FILTER, ROM_FILE   as prenc_core (N here 4..16: the link sends 2 bytes)
 //   CLK_HZ        clock frequency, a multiple of 1 MHz

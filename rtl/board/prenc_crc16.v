@@ -5,6 +5,8 @@
 // XOR; a frame's CRC starts at 16'hFFFF. This is Python's binascii.crc_hqx(data,
 // 0xFFFF), the reference the host protocol (prenc.link.protocol) uses.
 //
+// Latency: none, combinational.
+//
 // Ports
 //   crc_in    CRC before the byte
 //   data      the byte

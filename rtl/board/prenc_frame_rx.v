@@ -12,6 +12,9 @@
 // corrupted LEN: the host waits for an answer (far longer than TIMEOUT) before it
 // sends again, so the parser is hunting again when the next frame starts.
 //
+// Latency: frame_valid or frame_error one clock after the byte that ends the frame (the
+// second CRC byte) comes from the UART.
+//
 // Parameters
 //   MAX_LEN   largest payload accepted, 1..16 bytes
 //   TIMEOUT   idle clocks that abort a frame, >= 1 (the board uses 2 byte times)

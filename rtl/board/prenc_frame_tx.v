@@ -7,6 +7,9 @@
 // (prenc_crc16) byte by byte. `busy` is high from `start` until the last byte has
 // been handed to the UART.
 //
+// Latency: the first byte (A5) is offered to the UART the clock after `start`; each
+// next byte when the UART is ready again, so a frame takes its bytes' time on the line.
+//
 // Parameters
 //   MAX_LEN   largest payload, 1..16 bytes (LEN is clipped to it)
 //

@@ -30,6 +30,10 @@
 // answer that falls due while another is being sent goes out right after it, so a
 // period shorter than a frame streams back to back at the link's rate.
 //
+// Latency: an answer's data are the core's outputs on the clock its frame starts, after
+// the request frame has been checked (or when a streamed answer falls due); the answer
+// then takes its bytes' time on the line, 10 bit times a byte.
+//
 // Parameters
 //   N         code word length of the core, 4..16
 //   CLK_HZ    clock frequency, a multiple of 1 MHz (for TIME and the stream period)

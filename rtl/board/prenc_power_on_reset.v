@@ -7,6 +7,10 @@
 // initial values, which FPGAs load at configuration; this is the one module that
 // relies on them, because nothing can reset the reset.
 //
+// Latency: rst rises on the clock after the PLL loses lock, or 3 clocks after the
+// button's pin rises (its synchronizer), and falls about HOLD clocks after both are
+// released.
+//
 // Parameters
 //   HOLD   clocks rst stays high after lock and release, 4..65535 (the core needs 4)
 //

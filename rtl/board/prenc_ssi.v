@@ -21,6 +21,9 @@
 //   by at most 4 clocks, so a half period of ssi_clk must be longer than that
 //   (at 24 MHz, up to about 2 MHz SSI clock).
 //
+// Latency: the position is latched on the clock the synchronized ssi_clk first falls (2
+// to 3 clocks after the pin); ssi_data follows each rising edge by at most 4 clocks.
+//
 // Parameters
 //   WIDTH      position bits, 1..32
 //   ERROR_BIT  1: append the error bit; 0: position bits only

@@ -10,6 +10,9 @@
 // So the turns survive a lost position as long as the disc moved less than half a
 // turn more than the count saw (a missed quadrature state costs two quarters).
 //
+// Latency: one clock; turns and full are registered from the same clock's position,
+// valid and count.
+//
 // Parameters
 //   POS_BITS    single-turn bits (pos_hyb: N + 2), 2..30
 //   TURN_BITS   multi-turn bits, 1..32 (the turn count wraps modulo 2^TURN_BITS)

@@ -8,6 +8,10 @@
 // pulses, and the receiver waits for the line to go high (a break) before it
 // looks for the next start bit.
 //
+// Latency: the line passes a two-flop synchronizer; `valid` pulses in the middle of the
+// stop bit, 9.5 bit times after the start bit's falling edge, plus the synchronizer's 2
+// clocks.
+//
 // Parameters
 //   CLKS_PER_BIT   clocks per bit, round(clock / baud), >= 4
 //

@@ -5,6 +5,9 @@
 // a stop bit, each CLKS_PER_BIT clocks long. `ready` rises again as the stop bit
 // ends, so a byte offered on that clock follows with no idle gap.
 //
+// Latency: the start bit begins on the clock after `start & ready`; a byte takes 10 x
+// CLKS_PER_BIT clocks.
+//
 // Parameters
 //   CLKS_PER_BIT   clocks per bit, round(clock / baud), >= 4
 //

@@ -4,6 +4,9 @@
 // address, data, byte selects) and the read data, ack and irq fold into one pin, so that
 // no register of the map can be optimized away and the timing seen is the bus's own.
 // Used by `scripts/synth.py --core <target> --top prenc_wb_harness`; not for designs.
+//
+// Latency: not meaningful; the harness exists for synthesis only (every register of the
+// map kept, the bus's own timing seen).
 
 `resetall
 `timescale 1ns / 1ps

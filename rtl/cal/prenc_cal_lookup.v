@@ -15,6 +15,10 @@
 //   reads it in the same cycle (the read returns the old word), is emptied.
 // Model: prenc.cal.lookup.CalLookup.
 //
+// Latency: c_lo and c_hi hold the words of the quarter asked in the cycle before (one
+// clock); a jump to another quarter takes two clocks, and `ok` says when both words are
+// there.
+//
 // Parameters
 //   N          code word length, 2..16 (the table is 2^(N+2) words of 16 bits)
 //   CAL_FILE   the table ($readmemh, prenc.cal.table's format; checked in simulation);

@@ -9,6 +9,9 @@
 // prenc_edge_capture's edges are.
 // Model: prenc.cal.decoder_quarter.DecoderQuarter.
 //
+// Latency: none, combinational: the quarter the decoder's registered step entered, on
+// the step's own clock.
+//
 // Parameters
 //   N   code word length, 2..24 (pos_hyb and quarter are N + 2 bits)
 //

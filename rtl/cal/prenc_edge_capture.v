@@ -13,6 +13,10 @@
 // came: the record has a gap there, and the host starts it anew.
 // Model: prenc.cal.edge_capture.EdgeCapture.
 //
+// Latency: a step's entry is written into the FIFO on the clock after the step; the run
+// at the FIFO's head is on the outputs from the clock after it was written, until
+// `take` removes it.
+//
 // Parameters
 //   N   code word length, 2..24 (edges are N + 2 bits)
 //

@@ -9,6 +9,9 @@
 // ports and no hardware: the owner instantiates it under `ifndef SYNTHESIS (Yosys
 // stops by itself on a missing file).
 //
+// Latency: none; the module has no ports and only checks the table file while it is
+// elaborated and at time 0 of a simulation.
+//
 // Parameters
 //   NAME   the owner's parameter that names the file, for the message
 //   FILE   the $readmemh file

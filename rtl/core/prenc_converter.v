@@ -7,6 +7,8 @@
 // The table (address w(p), data p) comes from `prenc rom --format hex`; it maps to
 // block RAM in synthesis (registered read, no reset on the data register).
 //
+// Latency: one clock, from word_valid and word to pos_valid and pos.
+//
 // Parameters
 //   N         code word length, 2..24 (2^N words of N bits)
 //   ROM_FILE  $readmemh file with exactly 2^N words; a missing or short file stops

@@ -10,6 +10,9 @@
 // `make bench`. Used by `scripts/synth.py --core <target> --top prenc_core_harness`;
 // not for designs.
 //
+// Latency: the core's, plus the registers that fold its outputs into one pin; the
+// harness exists for synthesis only.
+//
 // Parameters: N, TAPS, FILTER, ROM_FILE as prenc_core (checked there); the core's other
 // parameters keep their defaults.
 

@@ -7,6 +7,8 @@
 // The one place these laws are written in the RTL: prenc_track_word uses it.
 // Model: prenc.debruijn forward_bit / inverse_bit.
 //
+// Latency: none, combinational.
+//
 // Parameters
 //   N      code word length, 2..24
 //   TAPS   feedback set T as a mask: bit t-1 set for each tap t (default disc: 32'h204)

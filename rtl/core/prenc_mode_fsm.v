@@ -40,6 +40,10 @@
 // Model: prenc.mode_fsm.ModeFsm (decisions registered; flush, law_on and realign are
 // one-clock pulses to the track words).
 //
+// Latency: the judge's decisions are registered: pos_valid, the offset and the mode
+// change one clock after the track words' registered evidence they follow (the core's 6
+// + FILTER clocks from the pins in all).
+//
 // Parameters
 //   N            offset width, 2..24
 //   LOCK_BOTH    two-track lock: N + LOCK_BOTH - 1 slots per track, 1..32

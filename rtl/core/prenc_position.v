@@ -12,6 +12,10 @@
 // so that count + offset meets the judge's verdict at one latency.
 // Model: prenc.position.Position.
 //
+// Latency: slot, up, down and the illegal events one clock after the decoder's
+// registered step; slot_out and quarter_out DECISION_DELAY = 4 clocks later, to meet
+// the judge's verdict.
+//
 // Parameters
 //   N   code word length, 2..24 (the count is modulo 2^N)
 //

@@ -12,6 +12,9 @@
 // wrapping back to a harmless-looking zero, and the illegal pulse gives the event
 // itself to the logic that must react at once.
 //
+// Latency: one clock: quarter, step, step_cw, illegal, the counts one clock after the
+// (a, b) sample they describe; the *_next outputs on that sample's clock.
+//
 // Parameters
 //   COUNT_WIDTH  width of the signed step counter, 2..64
 //   ERROR_WIDTH  width of the illegal-transition counter, 1..32

@@ -24,6 +24,9 @@
 // unless a step or another illegal transition comes in between (one event per clock).
 // They are evidence for the reader's two hypotheses, not a mid-slot sample.
 //
+// Latency: a strobe one clock after the decoder's step over a mid-slot edge (HEAD_DELAY
+// = 1: after its registered step; 0: after its *_next step, a clock earlier).
+//
 // Parameters
 //   JUMP         1: also strobe the landing reading after an illegal transition; 0:
 //                mid-slot only

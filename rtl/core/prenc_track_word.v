@@ -38,6 +38,10 @@
 // makes `converted slot - base` the offset for either head.
 // Model: prenc.track_word.TrackWord.
 //
+// Latency: a strobe's event is registered and applied on the clock after it, one clock
+// behind the slot count (part of prenc_core's 6 + FILTER); `addr` is the word after
+// this clock, for the converter's registered read.
+//
 // Parameters
 //   N            code word length, 2..24
 //   TAPS         feedback set as a mask, bit t-1 per tap t (default disc: 32'h204)

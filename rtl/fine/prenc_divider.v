@@ -11,6 +11,8 @@
 // the remainder as num's bits above the quotient's (below den, else the quotient
 // saturates); then it takes one more bit of num a clock.
 //
+// Latency: QUOTIENT_BITS + 2 clocks from `start` to `done`.
+//
 // Parameters
 //   NUM_BITS       numerator width, QUOTIENT_BITS + 1..128
 //   DEN_BITS       denominator width, 1..64

@@ -21,6 +21,11 @@
 //   when the quarter was asked (else 0: the nominal edges).
 // Model: prenc.fine.fine.Fine.
 //
+// Latency: fine_pos is OUTPUT_DELAY = 3 clocks after the core's pos_hyb (extrapolated
+// over the clocks from the pins by LOOKAHEAD_HALVES); the velocity updates FULL_CLOCKS
+// after a window closes and integrates its acceleration every clock in between
+// (prenc_velocity).
+//
 // Parameters
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
 //   WINDOW, TIMER_BITS               prenc_velocity's (2048, 26)

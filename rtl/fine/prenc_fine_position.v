@@ -30,6 +30,9 @@
 //   not used.
 // Model: prenc.fine.fine_position.FinePosition.
 //
+// Latency: OUTPUT_DELAY = 3 clocks after pos_hyb, through three register stages; the
+// extrapolation's velocity is that of three clocks before.
+//
 // Parameters
 //   N                 code word length, 2..24 (pos_hyb is N + 2 bits)
 //   FINE_BITS         F, the fraction's bits, 0..8

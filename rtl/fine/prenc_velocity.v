@@ -37,6 +37,10 @@
 // update takes FULL_CLOCKS; a step that comes while they are busy updates nothing.
 // Model: prenc.fine.velocity.Velocity, which this equals clock for clock.
 //
+// Latency: an update loads velocity and accel FULL_CLOCKS after the step that closed
+// the window (the serial divider and multiplier); between updates they move every
+// clock.
+//
 // Parameters
 //   WINDOW       shortest window in clocks, 16..2^(TIMER_BITS-1)-1 (2048: 68 us at 30 MHz)
 //   TIMER_BITS   width of the clocks counted, 12..32 (26: 2.2 s at 30 MHz)

@@ -8,6 +8,9 @@
 // the iCE40 UP5K's SG48 package; with TABLE = "generator" and N = 4 the 64 Ki-word
 // table goes to the UP5K's four SPRAMs.
 //
+// Latency: the reader's (a reading N*N + 5 clocks after the frame's last pixel), then
+// the SSI frame latches the last reading at the controller's first falling edge.
+//
 // Parameters: as prenc_matrix_reader, plus MONOFLOP (prenc_ssi).
 // Ports
 //   clk, rst                         one clock; synchronous active-high reset

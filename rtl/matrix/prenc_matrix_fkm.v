@@ -9,6 +9,10 @@
 // Each step without output costs one clock, so the 2^(N*B) symbols take 2^(N*B) +
 // (number of prenecklaces) clocks: 83,948 clocks for N = 4, B = 4.
 //
+// Latency: the first symbol a few clocks after reset; then one symbol per clock, and
+// one clock more for each step without output: 2^(N*B) + (number of prenecklaces)
+// clocks in all.
+//
 // Parameters: N 2..4 (order), B 1..4 (bits per symbol).
 // Ports
 //   clk, rst   starts again from the first symbol on reset

@@ -30,6 +30,9 @@
 // A frame whose first pixel comes while busy is ignored; a pixel_first in the middle
 // of a frame starts a new frame (the partial one is dropped).
 //
+// Latency: out_valid pulses on the N*N + 5th clock after the frame's last pixel (the
+// timing above).
+//
 // Parameters (checked; an illegal value stops elaboration with the name of the problem)
 //   N 2..4, CHECKSUM 0..1, CELL 3..16, WIDTH (N+1)*CELL..64, HEIGHT TOP+N*CELL..255,
 //   TOP 0..255, PIXEL_BITS 4..12, MIN_CONTRAST 1..2^PIXEL_BITS-1,

@@ -17,6 +17,9 @@
 //                can preload. ready rises after 2^A + (prenecklaces) + N + 1
 //                clocks (83,953 for N = 4); reads before ready return garbage.
 //
+// Latency: one clock (registered read); with TABLE = "generator", reads are meaningful
+// once `ready` is high.
+//
 // Parameters
 //   N           order, 2..4 (an N x N window)
 //   CHECKSUM    1: track N-1 is the even parity of the others (N-1 data bits a column)
