@@ -38,6 +38,10 @@
 // Interrupt: IRQ_STATUS.lost_valid is set when pos_valid falls, .mode_change when mode
 // changes (an event beats a clear on the same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
 //
+// Latency: ack one clock after cyc & stb; a read returns the register as it was on the
+// clock the access was sampled. The core's outputs are 6 + FILTER clocks behind the
+// pins (prenc_core).
+//
 // Parameters: those of prenc_core (N, TAPS, FILTER, ROM_FILE, and its decision and build
 // options LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
 // SCORE_LIMIT, CONV_REG, passed to it as they are; the counters are 32-bit and 16-bit,
@@ -125,7 +129,7 @@ module prenc_wb #(
   localparam [4:0] A_CAL_DATA         = 5'h19;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_0300;  // 0.3.0
+  localparam [31:0] VERSION = 32'h0000_0400;  // 0.4.0, the project's VERSION
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n

@@ -15,4 +15,16 @@ this package, never the other way round. One subpackage per concern, as rtl/:
 Imports go one way: codes <- core, virtual <- board <- cli; nd and matrix use codes.
 """
 
-__version__ = "0.1.0"
+from importlib import metadata as _metadata
+from pathlib import Path as _Path
+
+
+def _version() -> str:
+    """The project's one version: the repository's VERSION file, else the installed one."""
+    here = _Path(__file__).resolve().parents[2] / "VERSION"
+    if here.is_file():
+        return here.read_text().strip()
+    return _metadata.version("prenc")
+
+
+__version__ = _version()

