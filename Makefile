@@ -2,7 +2,8 @@
 # prenc: pseudorandom absolute encoder reader.
 #
 #   make demo    generate the ROM, run the virtual encoder, print and plot what it read
-#   make test    every test, on Verilator and Icarus
+#   make test    every test, on Verilator and Icarus, the formal proofs and the docs
+#   make docs    the documentation as a site (Sphinx, MyST, WaveDrom) into build/docs/html
 #   make bench   benchmarks, side by side in one run (ARGS=fine: section 9 alone;
 #                ARGS=cal: section 10 alone)
 #   make lint    verilator --lint-only -Wall on every top's file list
@@ -42,7 +43,7 @@ WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT
 BOARD ?= icebreaker
 BITS  ?= 10
 
-.PHONY: all demo test bench lint rom synth board-sim formal mutate equiv soak sysdeps venv clean distclean
+.PHONY: all demo test docs bench lint rom synth board-sim formal mutate equiv soak sysdeps venv clean distclean
 
 all: test
 
@@ -60,7 +61,7 @@ sysdeps:
 
 venv: $(STAMP)
 
-$(STAMP): requirements.txt pyproject.toml | sysdeps
+$(STAMP): requirements.txt pyproject.toml VERSION | sysdeps
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -r requirements.txt
@@ -69,6 +70,11 @@ $(STAMP): requirements.txt pyproject.toml | sysdeps
 
 test: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) -m pytest -n $(JOBS) --dist loadgroup
+
+# Warnings are errors; tb/lint/test_docs.py builds the same site in make test.
+docs: $(STAMP)
+	@$(PY) -m sphinx -W --keep-going -b html -q docs build/docs/html
+	@echo "docs: build/docs/html/index.html"
 
 demo: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/demo.py --out build/demo

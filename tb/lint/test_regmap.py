@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """The register map is described once (rtl/bus/prenc_wb.rdl): the committed C header,
-register documentation and README table are what scripts/regmap.py generates from it,
+register map page are what scripts/regmap.py generates from it,
 the RTL's addresses are the RDL's, and the C header compiles with the example."""
 
 from __future__ import annotations

@@ -170,3 +170,33 @@ def timing_diagram(turns: int, position: int, mt_bits: int, st_bits: int,
             slo.append("‾" if level else "_")
     rows = [("MA  ", ma), ("rise", rise), ("SLO ", slo), ("    ", label)]
     return "\n".join((name + " " + "".join(row)).rstrip() for name, row in rows)
+
+
+def wavedrom(turns: int, position: int, mt_bits: int, st_bits: int,
+             error: bool = False, warning: bool = False) -> str:
+    """The same frame as timing_diagram, as WaveDrom JSON (docs/biss-c.md renders it):
+    one character per half period of MA; SLO drawn changing with each rising edge."""
+    bits = frame_bits(turns, position, mt_bits, st_bits, error, warning)
+    pulses = clock_pulses(mt_bits, st_bits)
+    after = {1: 1, 2: 0, 3: 1, pulses: 0}
+    after.update({4 + i: b for i, b in enumerate(bits)})
+    ma, slo, level = "1.", "1.", 1
+    for k in range(1, pulses + 1):
+        ma += "01"  # the falling edge, then the rising edge k
+        new = after[k]
+        slo += "." + ("." if new == level else str(new))
+        level = new
+    ma += "...."
+    slo += "..1."
+    names = (["Ack", "Start", "CDS"] + [f"M{mt_bits - 1 - i}" for i in range(mt_bits)]
+             + [f"S{st_bits - 1 - i}" for i in range(st_bits)] + ["nE", "nW"]
+             + [f"C{CRC_BITS - 1 - i}" for i in range(CRC_BITS)])
+    labels = " ".join(names)
+    return ('{ "signal": [\n'
+            f'  {{ "name": "MA",  "wave": "{ma}", "node": "..a" }},\n'
+            f'  {{ "name": "SLO", "wave": "{slo}" }}\n'
+            '  ],\n'
+            '  "edge": ["a latch"],\n'
+            f'  "foot": {{ "text": "after rising edges 2 to {pulses - 1}: {labels}; then the timeout" }}\n'
+            '}')
+

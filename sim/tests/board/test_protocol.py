@@ -112,3 +112,4 @@ def test_biss_frame_layout_and_the_documented_diagram():
     assert biss.clock_pulses(12, 12) == 37
     doc = (Path(__file__).resolve().parents[3] / "docs" / "biss-c.md").read_text()
     assert biss.timing_diagram(1, 0b1011, 2, 4) in doc
+    assert "```{wavedrom}\n" + biss.wavedrom(1, 0b1011, 2, 4) + "\n```" in doc

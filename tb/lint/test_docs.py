@@ -1,0 +1,72 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The documentation: `make docs` builds with no warning (warnings are errors), the pages
+hold the rendered timing diagrams, the register map and a page per RTL module; every
+module states its latency; the README stays a front door."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+
+import pytest
+
+from runner import REPO
+
+sys.path.insert(0, str(REPO / "docs" / "_ext"))
+import prenc_modules  # noqa: E402
+
+MODULES = sorted(REPO.glob("rtl/*/prenc_*.v"))
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory):
+    out = tmp_path_factory.mktemp("docs") / "html"
+    proc = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-b", "html", "-q",
+                           str(REPO / "docs"), str(out)], capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-5000:]
+    return out
+
+
+def test_the_docs_build_without_a_warning(site):
+    assert (site / "index.html").is_file()
+
+
+@pytest.mark.parametrize("page,diagrams", [("interfaces/ssi.html", 1), ("biss-c.html", 1),
+                                           ("host-protocol.html", 2), ("interfaces/strobe-timing.html", 1)])
+def test_the_timing_diagrams_are_rendered_at_build_time(site, page, diagrams):
+    html = (site / page).read_text()
+    images = re.findall(r'<img[^>]+src="([^"]*wavedrom[^"]*\.svg)"', html)
+    assert len(images) == diagrams, images
+    for src in images:
+        svg = (site / page).parent / src
+        assert svg.read_text().lstrip().startswith("<svg") or "<svg" in svg.read_text()[:500]
+
+
+def test_the_register_map_is_in_the_site(site):
+    html = (site / "registers.html").read_text()
+    for register in ("SNAP_VELOCITY", "CAL_DATA", "IRQ_STATUS"):
+        assert register in html
+
+
+def test_every_rtl_module_has_a_reference_page(site):
+    for source in MODULES:
+        page = site / "reference" / "modules" / f"{source.stem}.html"
+        assert page.is_file(), source
+    core = (site / "reference" / "modules" / "prenc_core.html").read_text()
+    assert "ROM_FILE" in core and "pos_valid" in core and "6 + FILTER" in core
+
+
+@pytest.mark.parametrize("source", MODULES, ids=[m.stem for m in MODULES])
+def test_every_module_states_its_latency(source):
+    comment = prenc_modules.header_comment(source.read_text())
+    assert prenc_modules.latency(comment), f"{source.relative_to(REPO)}: no 'Latency' paragraph"
+
+
+def test_a_module_without_a_latency_is_found():
+    assert prenc_modules.latency(["prenc_x: a block.", "", "Ports", "  a  an input"]) is None
+
+
+def test_the_readme_is_a_front_door():
+    lines = (REPO / "README.md").read_text().splitlines()
+    assert len(lines) <= 250, len(lines)
