@@ -74,8 +74,46 @@ def declaration(text: str) -> tuple[str, str, str] | None:
     return found.group(1), params, ports
 
 
+def described(comment: list[str]) -> dict[str, str]:
+    """Each name's description from the header's "Parameters" and "Ports" lists: lines
+    "  name[, name ...]   what it is", continued on deeper-indented lines."""
+    found: dict[str, str] = {}
+    names: list[str] = []
+    in_list = False
+    for line in comment:
+        head = line.strip()
+        if re.match(r"(Parameters|Ports)\b", head):
+            in_list, names = True, []
+            continue
+        if not head:
+            in_list = False if not names else in_list
+            continue
+        if not in_list:
+            continue
+        item = re.match(r"^  (\w+(?:\s*(?:,|\.\.\.)\s*\w+)*)\s{2,}(.*)$", line)
+        if item and not line.startswith("   "):
+            names = [n for n in re.split(r"\s*(?:,|\.\.\.)\s*", item.group(1)) if n]
+            for name in names:
+                found[name] = item.group(2).strip()
+        elif names and line.startswith("   "):
+            for name in names:
+                found[name] += " " + head
+        elif names:  # the list has ended
+            in_list = False
+    return found
+
+
 def width_of(rng: str | None) -> str:
     return "1" if not rng else rng.replace(" ", "")
+
+
+def capital(text: str) -> str:
+    return text[:1].upper() + text[1:]
+
+
+def cell(text: str) -> str:
+    """Text for a Markdown table cell."""
+    return text.replace("|", "\\|")
 
 
 def page(source: Path, repo: Path) -> tuple[str, str]:
@@ -90,23 +128,24 @@ def page(source: Path, repo: Path) -> tuple[str, str]:
     summary = comment[0].split(":", 1)[-1].strip() if comment else ""
     rel = source.relative_to(repo).as_posix()
     lat = latency(comment)
+    meaning = described(comment)
     if lat is None:
         LOG.warning("%s: the header comment has no 'Latency' paragraph", rel, type="prenc", subtype="latency")
         lat = "(not stated)"
-    out = [f"# `{name}`", "", f"{summary[:1].upper() + summary[1:]}", "", f"Source: `{rel}`", ""]
+    out = [f"# `{name}`", "", capital(summary), "", f"Source: `{rel}`", ""]
     out += ["## Parameters", ""]
     if params:
-        out += ["| parameter | default |", "|---|---|"]
-        out += [f"| `{p}` | `{d.strip()}` |" for p, d in params]
+        out += ["| parameter | default | meaning |", "|---|---|---|"]
+        out += [f"| `{p}` | `{d.strip()}` | {cell(meaning.get(p, ''))} |" for p, d in params]
     else:
         out += ["None."]
     out += ["", "## Ports", ""]
     if ports:
-        out += ["| port | direction | width |", "|---|---|---|"]
-        out += [f"| `{n}` | {d} | `{width_of(w)}` |" for d, w, n in ports]
+        out += ["| port | direction | width | meaning |", "|---|---|---|---|"]
+        out += [f"| `{n}` | {d} | `{width_of(w)}` | {cell(meaning.get(n, ''))} |" for d, w, n in ports]
     else:
         out += ["None: the module checks its parameters and files while it is elaborated."]
-    out += ["", "## Latency", "", lat, "", "## From the source's header", "", "```text"]
+    out += ["", "## Latency", "", capital(re.sub(r"^Latency:?\s*", "", lat)), "", "## From the source's header", "", "```text"]
     out += comment + ["```", ""]
     return name, "\n".join(out)
 
