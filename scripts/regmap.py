@@ -87,10 +87,10 @@ def markdown(root) -> str:
              "one-clock pulse. The C header `sw/prenc_wb.h` and the tests' Python access are\n"
              "generated from the same RDL ([in your design](guide/in-your-design.md)).\n\n")
     return ("<!-- SPDX-License-Identifier: Apache-2.0 -->\n" + head.strip() + "\n\n"
-            + title + readme_table(root) + "\n\n## " + detail)
+            + title + summary_table(root) + "\n\n## " + detail)
 
 
-def readme_table(root) -> str:
+def summary_table(root) -> str:
     """The summary table: offset, register, fields (bits), access."""
     rows = ["| offset | register | fields (bits) | access |", "|---|---|---|---|"]
     # access: r read only, rw read/write, w1c write 1 to clear, w1p write 1 for a pulse

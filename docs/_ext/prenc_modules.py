@@ -68,7 +68,7 @@ def declaration(text: str) -> tuple[str, str, str] | None:
     if text[k] == "#":
         k = text.index("(", k)
         params, k = balanced(text, k)
-    k = len(text[:k]) + len(text[k:]) - len(text[k:].lstrip())
+    k = len(text) - len(text[k:].lstrip())  # past the blanks
     if text[k] == "(":
         ports, k = balanced(text, k)
     return found.group(1), params, ports
@@ -85,8 +85,8 @@ def described(comment: list[str]) -> dict[str, str]:
         if re.match(r"(Parameters|Ports)\b", head):
             in_list, names = True, []
             continue
-        if not head:
-            in_list = False if not names else in_list
+        if not head:  # a blank line ends a list that has begun
+            in_list = in_list and not names
             continue
         if not in_list:
             continue

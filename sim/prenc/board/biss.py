@@ -133,15 +133,20 @@ def sample(rises: list[float], slo_edges: list[tuple[float, int]], period: float
     return bits, delay
 
 
+def bit_names(mt_bits: int, st_bits: int) -> list[str]:
+    """The frame's bits from CDS on, as the diagrams name them."""
+    return (["CDS"] + [f"M{mt_bits - 1 - i}" for i in range(mt_bits)]
+            + [f"S{st_bits - 1 - i}" for i in range(st_bits)] + ["nE", "nW"]
+            + [f"C{CRC_BITS - 1 - i}" for i in range(CRC_BITS)])
+
+
 def timing_diagram(turns: int, position: int, mt_bits: int, st_bits: int,
                    error: bool = False, warning: bool = False) -> str:
     """A frame as text (docs/biss-c.md): MA, the rising edges' numbers, SLO and the
     bits' names. SLO is drawn changing just after each rising edge; X marks a bit
     boundary without a change of level."""
     bits = frame_bits(turns, position, mt_bits, st_bits, error, warning)
-    names = (["CDS"] + [f"M{mt_bits - 1 - i}" for i in range(mt_bits)]
-             + [f"S{st_bits - 1 - i}" for i in range(st_bits)] + ["nE", "nW"]
-             + [f"C{CRC_BITS - 1 - i}" for i in range(CRC_BITS)])
+    names = bit_names(mt_bits, st_bits)
     pulses = clock_pulses(mt_bits, st_bits)
     period, lead, tail = 5, 4, 14
     width = lead + period * pulses + tail
@@ -188,10 +193,7 @@ def wavedrom(turns: int, position: int, mt_bits: int, st_bits: int,
         level = new
     ma += "...."
     slo += "..1."
-    names = (["Ack", "Start", "CDS"] + [f"M{mt_bits - 1 - i}" for i in range(mt_bits)]
-             + [f"S{st_bits - 1 - i}" for i in range(st_bits)] + ["nE", "nW"]
-             + [f"C{CRC_BITS - 1 - i}" for i in range(CRC_BITS)])
-    labels = " ".join(names)
+    labels = " ".join(["Ack", "Start"] + bit_names(mt_bits, st_bits))
     return ('{ "signal": [\n'
             f'  {{ "name": "MA",  "wave": "{ma}", "node": "..a" }},\n'
             f'  {{ "name": "SLO", "wave": "{slo}" }}\n'
