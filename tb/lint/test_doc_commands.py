@@ -8,7 +8,8 @@ another test runs them: COVERED names that test and the words of the command it 
 contain, so that a command added to the docs without a test, or a test that stops running
 it, fails here. A board's port (/dev/ttyUSB1, /dev/pts/N) is the pseudo-terminal of the
 simulated board in those tests. Only the programmers (iceprog, openFPGALoader) need real
-hardware; NEEDS_A_BOARD lists them.
+hardware; NEEDS_A_BOARD lists them. One command is run by `make bench` instead of a
+test, the LiteX example's ULX3S bitstream (minutes of place and route).
 """
 
 from __future__ import annotations
@@ -51,6 +52,9 @@ COVERED = [
       '("synth_ice40", "SB_LUT4")']),
     (r"fusesoc run --target lint prenc:reader:core --FILTER=3 --HYPOTHESES=0", "tb/lint/test_fusesoc.py",
      ['"--FILTER=3", "--HYPOTHESES=0"']),
+    (r"make litex-soc", "tb/bus/prenc_wb/test_prenc_wb_litex.py", ['litex_soc.build("sim"']),
+    # The ULX3S example's bitstream takes minutes: make bench builds it (section 7), not make test.
+    (r"make litex-soc BOARD=ulx3s", "scripts/bench.py", ['litex_soc.build("ulx3s"']),
 ]
 RUN_HERE = [r"\.venv/bin/prenc (taps|rom|tracks|disc) .*", r"make rom", r"make demo"]
 NEEDS_A_BOARD = [r"iceprog \S+", r"openFPGALoader -b ulx3s \S+"]
