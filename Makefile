@@ -18,9 +18,9 @@
 #   make soak [ARGS="--bits 10 --filter 0 --seeds 1..500"]
 #                many random draws of the end-to-end scenarios through the reader
 #                model, as CI judges the RTL (scripts/soak.py --help)
-#   make litex-soc BOARD=sim|ulx3s
+#   make litex-soc BOARD=sim|ulx3s|icebreaker
 #                the LiteX example: VexRiscv + prenc_wb + the firmware of sw/litex/, its
-#                Verilog for simulation, or the ULX3S bitstream and its report
+#                Verilog for simulation, or a board's bitstream and its report
 #   make board-sim [ARGS="--profile reversals --misreads 0.01"]
 #                the virtual board: prenc_board on Verilator with its UART on a pty,
 #                for `prenc host` without a board (scripts/board_sim.py --help)

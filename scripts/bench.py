@@ -241,14 +241,15 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
             except synth.FlowError as err:
                 rows.append((f"{name} board top", n, f"FAILED: {err}"))
     # The LiteX example: VexRiscv, prenc_wb and the firmware of sw/litex/ (scripts/litex_soc.py).
-    what = "LiteX example SoC (VexRiscv minimal + prenc_wb), ULX3S"
-    try:
-        import litex_soc
+    for board in ("ulx3s", "icebreaker"):
+        what = f"LiteX example SoC (VexRiscv minimal + prenc_wb), {board}"
+        try:
+            import litex_soc
 
-        _, r = litex_soc.build("ulx3s", SIM_BUILD / "bench" / "litex" / "ulx3s")
-        rows.append((what, 10, _synth_line(synth, r)))
-    except (synth.FlowError, ImportError, OSError) as err:
-        rows.append((what, 10, f"FAILED: {err}"))
+            _, r = litex_soc.build(board, SIM_BUILD / "bench" / "litex" / board)
+            rows.append((what, 10, _synth_line(synth, r)))
+        except (synth.FlowError, ImportError, OSError) as err:
+            rows.append((what, 10, f"FAILED: {err}"))
     return rows
 
 

@@ -5,6 +5,7 @@ firmware of sw/litex/ in its ROM (`make litex-soc BOARD=sim|ulx3s`).
 
     scripts/litex_soc.py --board sim   [--out DIR]   the SoC's Verilog for simulation
     scripts/litex_soc.py --board ulx3s [--out DIR]   the bitstream for the ULX3S
+    scripts/litex_soc.py --board icebreaker          the bitstream for the iCEBreaker
 
 Two passes: the SoC is elaborated once for its generated headers (csr.h, mem.h, soc.h),
 the firmware is compiled against them and sw/prenc_wb.h with Debian's
@@ -14,6 +15,9 @@ a nominal 10 MHz with the UART at 1 Mbaud, for tb/bus/prenc_wb/test_prenc_wb_lit
 `ulx3s`: 25 MHz -> 50 MHz by the ECP5 PLL, the UART at 115200 on the FTDI, the encoder
 on J1 as the board's own top (docs/guide/wiring.md); LiteX writes the Verilog and the
 pins, the project's flow (scripts/synth.py) builds the bitstream and its report.
+`icebreaker`: 12 MHz -> 18 MHz by the iCE40 PLL (the UP5K places the SoC at 20 to 23 MHz),
+`prenc_wb` without the fine position (FINE = 0), 2 KiB of ROM and 1 KiB of SRAM (the
+block RAMs also hold the reader's ROM), the encoder on PMOD1A as the board's own top.
 """
 
 from __future__ import annotations
@@ -31,7 +35,10 @@ FIRMWARE = REPO / "sw" / "litex"
 CROSS = "riscv64-unknown-elf-"
 ARCH = ["-march=rv32i_zicsr", "-mabi=ilp32"]  # VexRiscv "minimal": no multiply, no compressed
 SIM_CLOCK_HZ, SIM_BAUD = 10_000_000, 1_000_000
-ULX3S_CLOCK_HZ = 50_000_000
+CLOCK_HZ = {"sim": SIM_CLOCK_HZ, "ulx3s": 50_000_000, "icebreaker": 18_000_000}  # the UP5K: 20 to 23 MHz
+TARGET = {"ulx3s": "ecp5-85k", "icebreaker": "ice40-up5k"}
+# The integrated ROM and SRAM: the UP5K's 30 block RAMs (15 KiB) hold the reader's ROM too.
+MEMORY = {"sim": (0x4000, 0x1000), "ulx3s": (0x4000, 0x1000), "icebreaker": (0x800, 0x400)}
 
 
 def sim_platform():
@@ -73,23 +80,53 @@ def ulx3s_platform():
     return LatticeECP5Platform("LFE5U-85F-6BG381C", io, toolchain="trellis")
 
 
+def icebreaker_platform():
+    from litex.build.generic_platform import IOStandard, Misc, Pins, Subsignal
+    from litex.build.lattice import LatticeiCE40Platform
+    from prenc.bus.litex import encoder_io
+
+    io = [("clk12", 0, Pins("35"), IOStandard("LVCMOS33")),
+          ("rst_n", 0, Pins("10"), IOStandard("LVCMOS33")),
+          ("serial", 0, Subsignal("tx", Pins("9")), Subsignal("rx", Pins("6")), IOStandard("LVCMOS33")),
+          ("user_led", 0, Pins("37"), IOStandard("LVCMOS33"))]
+    io += encoder_io({"head1": "4", "head2": "2", "sync_a": "47", "sync_b": "45"}, "LVCMOS33")
+    return LatticeiCE40Platform("ice40-up5k-sg48", io, toolchain="icestorm")
+
+
 def make_soc(board: str, rom_dir: Path, firmware: list[int] | None):
     from migen import ClockDomain, Signal
     from litex.gen import LiteXModule
     from litex.soc.integration.soc_core import SoCCore
     from prenc.bus.litex import add_prenc
 
-    platform = sim_platform() if board == "sim" else ulx3s_platform()
-    clock = SIM_CLOCK_HZ if board == "sim" else ULX3S_CLOCK_HZ
+    platform = {"sim": sim_platform, "ulx3s": ulx3s_platform, "icebreaker": icebreaker_platform}[board]()
+    clock = CLOCK_HZ[board]
+    rom_bytes, sram_bytes = MEMORY[board]
     rom = {"integrated_rom_init": firmware} if firmware else {}
     soc = SoCCore(platform, clk_freq=clock, cpu_type="vexriscv", cpu_variant="minimal",
-                  integrated_rom_size=0x4000, integrated_sram_size=0x1000,
+                  integrated_rom_size=rom_bytes, integrated_sram_size=sram_bytes,
                   uart_baudrate=SIM_BAUD if board == "sim" else 115200, with_timer=False,
                   ident="prenc LiteX example", **rom)
+    reader = {}
     if board == "sim":
         from litex.build.io import CRG
 
         soc.crg = CRG(platform.request("sys_clk"), platform.request("sys_rst"))
+    elif board == "icebreaker":
+        from litex.soc.cores.clock import iCE40PLL
+
+        class _CRG(LiteXModule):
+            def __init__(self):
+                self.cd_sys = ClockDomain()
+                self.pll = pll = iCE40PLL(primitive="SB_PLL40_PAD")
+                clk12 = platform.request("clk12")
+                pll.register_clkin(clk12, 12e6)
+                pll.create_clkout(self.cd_sys, clock)
+                self.comb += pll.reset.eq(~platform.request("rst_n"))
+                platform.add_period_constraint(clk12, 1e9 / 12e6)
+
+        soc.crg = _CRG()
+        reader = {"parameters": {"FINE": 0}}  # the UP5K has no room for the fine position
     else:
         from litex.soc.cores.clock import ECP5PLL
 
@@ -104,9 +141,10 @@ def make_soc(board: str, rom_dir: Path, firmware: list[int] | None):
                 platform.add_period_constraint(clk25, 1e9 / 25e6)  # nextpnr derives the PLL's
 
         soc.crg = _CRG()
+    if board != "sim":
         led = platform.request("user_led")
         soc.comb += led.eq(Signal(reset=1))
-    add_prenc(soc, platform.request("encoder"), n=10, rom_dir=rom_dir)
+    add_prenc(soc, platform.request("encoder"), n=10, rom_dir=rom_dir, **reader)
     return soc
 
 
@@ -164,13 +202,13 @@ def build(board: str, out: Path, run: bool = True):
     if gateware / "prenc_litex_soc.v" not in sources:  # LiteX's own build lists it already
         sources.append(gateware / "prenc_litex_soc.v")
     (gateware / "sources.txt").write_text("".join(f"{p}\n" for p in sources))
-    result = synthesize(gateware, sources) if board == "ulx3s" and run else None
+    result = synthesize(board, gateware, sources) if board != "sim" and run else None
     return gateware, result
 
 
-def synthesize(gateware: Path, sources: list[Path]):
-    """The ULX3S bitstream through the project's flow (scripts/synth.py: YoWASP Yosys,
-    nextpnr-ecp5 at the design clock, ecppack), report.md beside it; a missed clock fails."""
+def synthesize(board: str, gateware: Path, sources: list[Path]):
+    """The bitstream through the project's flow (scripts/synth.py: YoWASP Yosys, nextpnr
+    at the design clock, ecppack or icepack), report.md beside it; a missed clock fails."""
     import synth
 
     verilog = gateware / "prenc_litex_soc.v"
@@ -178,15 +216,16 @@ def synthesize(gateware: Path, sources: list[Path]):
     for init in sorted(gateware.glob("*.init")):  # memory files by their path in the repository
         text = text.replace(f'$readmemh("{init.name}"', f'$readmemh("{synth.rel(init)}"')
     verilog.write_text(text)
-    result = synth.build("prenc_litex_soc", sources, "ecp5-85k", {}, ULX3S_CLOCK_HZ / 1e6, gateware / "synth",
-                         pins=gateware / "prenc_litex_soc.lpf")
+    pins = gateware / ("prenc_litex_soc.lpf" if board == "ulx3s" else "prenc_litex_soc.pcf")
+    result = synth.build("prenc_litex_soc", sources, TARGET[board], {}, CLOCK_HZ[board] / 1e6, gateware / "synth",
+                         pins=pins)
     synth.write_report(result, gateware / "synth")
     return result
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--board", choices=("sim", "ulx3s"), default="sim")
+    parser.add_argument("--board", choices=("sim", "ulx3s", "icebreaker"), default="sim")
     parser.add_argument("--out", type=Path, help="output folder (default build/litex/<board>)")
     args = parser.parse_args(argv)
     out = args.out or REPO / "build" / "litex" / args.board
