@@ -54,7 +54,8 @@ COVERED = [
      ['"--FILTER=3", "--HYPOTHESES=0"']),
     (r"make litex-soc", "tb/bus/prenc_wb/test_prenc_wb_litex.py", ['litex_soc.build("sim"']),
     # The ULX3S example's bitstream takes minutes: make bench builds it (section 7), not make test.
-    (r"make litex-soc BOARD=ulx3s", "scripts/bench.py", ['litex_soc.build("ulx3s"']),
+    (r"make litex-soc BOARD=ulx3s", "scripts/bench.py", ['for board in ("ulx3s", "icebreaker")',
+                                                         "litex_soc.build(board"]),
 ]
 RUN_HERE = [r"\.venv/bin/prenc (taps|rom|tracks|disc) .*", r"make rom", r"make demo"]
 NEEDS_A_BOARD = [r"iceprog \S+", r"openFPGALoader -b ulx3s \S+"]
