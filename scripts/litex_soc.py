@@ -81,7 +81,7 @@ def ulx3s_platform():
 
 
 def icebreaker_platform():
-    from litex.build.generic_platform import IOStandard, Misc, Pins, Subsignal
+    from litex.build.generic_platform import IOStandard, Pins, Subsignal
     from litex.build.lattice import LatticeiCE40Platform
     from prenc.bus.litex import encoder_io
 
@@ -141,7 +141,7 @@ def make_soc(board: str, rom_dir: Path, firmware: list[int] | None):
                 platform.add_period_constraint(clk25, 1e9 / 25e6)  # nextpnr derives the PLL's
 
         soc.crg = _CRG()
-    if board != "sim":
+    if board != "sim":  # a pin held high: the ULX3S's LED 0 lights, the iCEBreaker's (active low) stays off
         led = platform.request("user_led")
         soc.comb += led.eq(Signal(reset=1))
     add_prenc(soc, platform.request("encoder"), n=10, rom_dir=rom_dir, **reader)
