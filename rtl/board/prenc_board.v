@@ -34,6 +34,9 @@
 //   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
 //                 period of the slowest MA). MA up to CLK_HZ / 5 (docs/biss-c.md)
+//   HOST_LINK     1: the host link and the edges' capture are built (default); 0: not
+//                 (uart_tx idles high, uart_rx is unused, the error counters are never
+//                 cleared: the iCEstick's HX1K has no room for the link's ~1,000 cells)
 //   FINE          1: prenc_fine is built (fine position, velocity; default); 0: not (SSI
 //                 and BiSS-C send pos_hyb: the iCEBreaker's UP5K has no room for it)
 //   FINE_BITS     fraction bits of the quarter in SSI's and BiSS-C's position, 0..8
@@ -77,6 +80,7 @@ module prenc_board #(
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_HYBRID     = 1,
   parameter integer BISS_TIMEOUT_US = 20,
+  parameter integer HOST_LINK       = 1,
   parameter integer FINE            = 1,
   parameter integer FINE_BITS       = 0,
   parameter integer EXTRAPOLATE     = 1,
@@ -137,6 +141,10 @@ module prenc_board #(
     if (BISS_HYBRID < 0 || BISS_HYBRID > 1) begin : g_bad_biss_hybrid
       initial $display("ERROR: %m: parameter BISS_HYBRID = %0d must be 0 or 1", BISS_HYBRID);
       prenc_board_parameter_BISS_HYBRID_must_be_0_or_1 u_stop ();
+    end
+    if (HOST_LINK < 0 || HOST_LINK > 1) begin : g_bad_host_link
+      initial $display("ERROR: %m: parameter HOST_LINK = %0d must be 0 or 1", HOST_LINK);
+      prenc_board_parameter_HOST_LINK_must_be_0_or_1 u_stop ();
     end
     if (FINE < 0 || FINE > 1) begin : g_bad_fine
       initial $display("ERROR: %m: parameter FINE = %0d must be 0 or 1", FINE);
@@ -267,83 +275,98 @@ module prenc_board #(
     .velocity_word  (velocity_word)
   );
 
-  // The edges' timing, for a calibration run (the host link's EDGES answer).
-  wire [1:0]   edge_run;
-  wire         edge_valid;
-  wire         edge_cw;
-  wire [N+1:0] edge_first;
-  wire [15:0]  edge_interval0;
-  wire [15:0]  edge_interval1;
-  wire [15:0]  edge_interval2;
-  wire         edge_lost;
-  wire         edge_take;
+  // The host link, and the edges' timing for a calibration run (its EDGES answer).
+  generate
+    if (HOST_LINK == 1) begin : g_host_link
+      wire [1:0]   edge_run;
+      wire         edge_valid;
+      wire         edge_cw;
+      wire [N+1:0] edge_first;
+      wire [15:0]  edge_interval0;
+      wire [15:0]  edge_interval1;
+      wire [15:0]  edge_interval2;
+      wire         edge_lost;
+      wire         edge_take;
+      wire [15:0]  link_errors;
+      wire         snapshot;
 
-  prenc_edge_capture #(
-    .N (N)
-  ) u_edges (
-    .clk       (clk),
-    .rst       (rst),
-    .step      (sync_step),
-    .step_cw   (direction),
-    .illegal   (sync_illegal),
-    .pos_hyb   (pos_hyb),
-    .pos_valid (valid),
-    .take      (edge_take),
-    .run       (edge_run),
-    .run_valid (edge_valid),
-    .run_cw    (edge_cw),
-    .run_edge  (edge_first),
-    .interval0 (edge_interval0),
-    .interval1 (edge_interval1),
-    .interval2 (edge_interval2),
-    .lost      (edge_lost)
-  );
+      prenc_edge_capture #(
+        .N (N)
+      ) u_edges (
+        .clk       (clk),
+        .rst       (rst),
+        .step      (sync_step),
+        .step_cw   (direction),
+        .illegal   (sync_illegal),
+        .pos_hyb   (pos_hyb),
+        .pos_valid (valid),
+        .take      (edge_take),
+        .run       (edge_run),
+        .run_valid (edge_valid),
+        .run_cw    (edge_cw),
+        .run_edge  (edge_first),
+        .interval0 (edge_interval0),
+        .interval1 (edge_interval1),
+        .interval2 (edge_interval2),
+        .lost      (edge_lost)
+      );
 
-  wire [15:0] link_errors;
-  wire        snapshot;
+      prenc_host_link #(
+        .N      (N),
+        .CLK_HZ (CLK_HZ),
+        .BAUD   (BAUD),
+        .CAL    (CAL)
+      ) u_link (
+        .clk           (clk),
+        .rst           (rst),
+        .rx            (uart_rx),
+        .tx            (uart_tx),
+        .pos_abs       (pos_abs),
+        .pos_hyb       (pos_hyb),
+        .pos_valid     (valid),
+        .mode          (mode_now),
+        .direction     (direction),
+        .incremental   (incremental),
+        .track1_pos    (track1_pos),
+        .track1_valid  (track1_valid),
+        .track2_pos    (track2_pos),
+        .track2_valid  (track2_valid),
+        .track1_errors (track1_errors),
+        .track2_errors (track2_errors),
+        .sync_errors   (sync_errors),
+        .fine_pos      (fine_word),
+        .velocity      (velocity_word),
+        .fine_info     ({2'b00, interpolated, velocity_valid, F[3:0]}),
+        .edge_run       (edge_run),
+        .edge_valid     (edge_valid),
+        .edge_cw        (edge_cw),
+        .edge_first     (edge_first),
+        .edge_interval0 (edge_interval0),
+        .edge_interval1 (edge_interval1),
+        .edge_interval2 (edge_interval2),
+        .edge_lost      (edge_lost),
+        .edge_take      (edge_take),
+        .cal_write      (cal_write),
+        .cal_address    (cal_address),
+        .cal_data       (cal_data),
+        .clear_errors  (clear_errors),
+        .link_errors   (link_errors),
+        .snapshot      (snapshot)
+      );
 
-  prenc_host_link #(
-    .N      (N),
-    .CLK_HZ (CLK_HZ),
-    .BAUD   (BAUD),
-    .CAL    (CAL)
-  ) u_link (
-    .clk           (clk),
-    .rst           (rst),
-    .rx            (uart_rx),
-    .tx            (uart_tx),
-    .pos_abs       (pos_abs),
-    .pos_hyb       (pos_hyb),
-    .pos_valid     (valid),
-    .mode          (mode_now),
-    .direction     (direction),
-    .incremental   (incremental),
-    .track1_pos    (track1_pos),
-    .track1_valid  (track1_valid),
-    .track2_pos    (track2_pos),
-    .track2_valid  (track2_valid),
-    .track1_errors (track1_errors),
-    .track2_errors (track2_errors),
-    .sync_errors   (sync_errors),
-    .fine_pos      (fine_word),
-    .velocity      (velocity_word),
-    .fine_info     ({2'b00, interpolated, velocity_valid, F[3:0]}),
-    .edge_run       (edge_run),
-    .edge_valid     (edge_valid),
-    .edge_cw        (edge_cw),
-    .edge_first     (edge_first),
-    .edge_interval0 (edge_interval0),
-    .edge_interval1 (edge_interval1),
-    .edge_interval2 (edge_interval2),
-    .edge_lost      (edge_lost),
-    .edge_take      (edge_take),
-    .cal_write      (cal_write),
-    .cal_address    (cal_address),
-    .cal_data       (cal_data),
-    .clear_errors  (clear_errors),
-    .link_errors   (link_errors),
-    .snapshot      (snapshot)
-  );
+      wire unused_link = &{1'b0, link_errors, snapshot};
+    end else begin : g_no_host_link
+      assign uart_tx      = 1'b1;
+      assign cal_write    = 1'b0;
+      assign cal_address  = {(N + 2){1'b0}};
+      assign cal_data     = 16'd0;
+      assign clear_errors = 1'b0;
+      wire unused_link = &{1'b0, uart_rx, pos_abs, incremental, track1_pos, track1_valid,
+                           track2_pos, track2_valid, track1_errors, track2_errors,
+                           sync_errors, fine_word, interpolated, velocity_valid,
+                           velocity_word};
+    end
+  endgenerate
 
   // Multi-turn from the fine position and the incremental count (in the fine units);
   // `turns_full` is {turns, fine position} of the clock before, always one pair.
@@ -443,7 +466,7 @@ module prenc_board #(
   assign pos_valid       = valid;
   assign mode            = mode_now;
 
-  wire unused_ok = &{1'b0, position, link_errors, snapshot, ssi_busy, biss_busy, biss_latch,
+  wire unused_ok = &{1'b0, position, ssi_busy, biss_busy, biss_latch,
                      turns_placed, turns, slot_held, fine_held, velocity, accel, sync_step,
                      sync_illegal};
 

@@ -75,7 +75,7 @@ BAD_PARAMETERS = [
     ("prenc_biss", "DATA_BITS", 0), ("prenc_biss", "DATA_BITS", 65), ("prenc_biss", "TIMEOUT", 1),
     ("prenc_turns", "POS_BITS", 1), ("prenc_turns", "TURN_BITS", 33),
     ("prenc_board", "BISS_MT_BITS", 25), ("prenc_board", "BISS_HYBRID", 2),
-    ("prenc_board", "BISS_TIMEOUT_US", 0), ("prenc_board", "SSI_HYBRID", 3),
+    ("prenc_board", "BISS_TIMEOUT_US", 0), ("prenc_board", "SSI_HYBRID", 3), ("prenc_board", "HOST_LINK", 2),
     ("prenc_ssi", "WIDTH", 0), ("prenc_core", "SHIFT", 7), ("prenc_core", "HYPOTHESES", 2),
     ("prenc_core", "CONV_REG", 2),
     ("prenc_quadrature", "COUNT_WIDTH", 1), ("prenc_sampler", "HEAD_DELAY", 2),
