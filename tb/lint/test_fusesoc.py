@@ -28,7 +28,7 @@ BIN = Path(sys.executable).parent
 VERSION = (REPO / "VERSION").read_text().strip()  # the project's one version
 CORES = [f"prenc:{name}:{VERSION}" for name in
          ("reader:common", "reader:core", "reader:fine", "reader:cal", "reader:bus", "reader:board",
-          "board:icebreaker", "board:ulx3s", "codes:nd", "codes:matrix")]
+          "board:icebreaker", "board:icestick", "board:ulx3s", "codes:nd", "codes:matrix")]
 
 
 def repository_files() -> list[str]:
