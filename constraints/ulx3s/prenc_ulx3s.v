@@ -6,6 +6,9 @@
 //   1 and 2 Mbaud exact; 3 Mbaud is 17 clocks per bit, 2 % fast.
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; FIRE1 too
 //   J1 header: GP0 head1, GN0 head2, GP1 sync A, GN1 sync B            (inputs, 3.3 V)
+//              (the top's ports are inputs and outputs only, GN2 and GN4 as their own
+//              ports: an `inout` bus with bits left undriven became outputs driving 0
+//              in the netlist, which tb/board/netlist found on GN0 and GN1)
 //              GP2 SSI clock in, GN2 SSI data out, GP3 SSI Gray select (pulled up: Gray)
 //              GP4 BiSS-C MA in (pulled up), GN4 BiSS-C SLO out (through RS-422
 //              transceivers to the drive: docs/biss-c.md)
@@ -33,7 +36,9 @@ module prenc_ulx3s #(
   input  wire       ftdi_txd,
   output wire       ftdi_rxd,
   input  wire [4:0] gp,
-  inout  wire [4:0] gn,
+  input  wire [1:0] gn,
+  output wire       gn2,
+  output wire       gn4,
   output wire [7:0] led,
   output wire       wifi_gpio0
 );
@@ -129,9 +134,8 @@ module prenc_ulx3s #(
     .mode            (mode)
   );
 
-  assign gn[2]      = ssi_data;
-  assign gn[3]      = 1'bz;
-  assign gn[4]      = biss_slo;
+  assign gn2        = ssi_data;
+  assign gn4        = biss_slo;
   assign led[7:5]   = 3'b000;
   assign wifi_gpio0 = 1'b1;  // keep the ESP32 from resetting the FPGA
 
