@@ -1,0 +1,197 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Every board build, simulated as the netlist Yosys makes of it, equals its RTL clock
+for clock.
+
+For the iCEstick, the iCEBreaker and the ULX3S: the board's top is synthesized as
+`make synth` does it (scripts/synth.py's Yosys step: the same parameters, ROM and
+`synth_<family>`), written as Verilog, and simulated on Icarus beside its RTL, with
+the vendor's cell models (pair.py: Yosys's cells_sim.v; our models of the PLLs and of
+ECP5's DP16KD, which Yosys has only as boxes). Both run from configuration: the
+PLL's lock, the power-on reset, the ROM's contents from its INIT parameters on one
+side and $readmemh on the other, every flip-flop's initial value (0 on the netlist, as
+a configured FPGA's; X in the RTL until its reset or first load).
+
+The scenario, on the board's pins: the virtual encoder (N = 10) turns clockwise from
+rest, then back; a BiSS-C master reads frames at a fifth of the clock, an SSI
+controller reads Gray frames, and where the board has the host link (iCEBreaker,
+ULX3S) a host asks for the hybrid position (before the reversal). Every output pin of the RTL and of the
+netlist is compared at every falling clock edge (`!==`), from the first clock: one
+difference fails the test. What was read must also be the disc's: BiSS-C's and SSI's
+frames valid with the position of the disc at the request (to the core's latency), the
+host's answer the same.
+
+The host link runs at 3 Mbaud on the iCEBreaker and 2 Mbaud on the ULX3S (10 and
+25 clocks per bit, `make synth BAUD=...`), so that its frames take a few thousand
+clocks; the builds are otherwise the boards' own.
+
+`test_a_register_without_its_reset_is_caught`: the same on the iCEstick with one
+register's reset taken out of the RTL (the judge's mode register in prenc_mode_fsm,
+which the mode LEDs show): the netlist starts it at 0, as the FPGA does, the RTL at X,
+and the comparison must see the difference in the first clocks.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import sys
+from pathlib import Path
+
+import cocotb
+import numpy as np
+import pytest
+from cocotb.clock import Clock
+from cocotb.triggers import ClockCycles, FallingEdge, Timer
+from cocotb.utils import get_sim_time
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "prenc_board"))
+
+from biss_master import Master  # noqa: E402
+from board_harness import drive_encoder  # noqa: E402
+from common import PERIOD_NS  # noqa: E402
+from prenc.board import protocol, ssi  # noqa: E402
+from prenc.virtual.encoder import Disc  # noqa: E402
+from prenc.virtual.scenarios import core_latency  # noqa: E402
+from runner import SIM_BUILD, rom_file, run  # noqa: E402
+from uart import UartSink, UartSource  # noqa: E402
+
+N, FILTER, MT_BITS = 10, 2, 12
+ST_BITS = N + 2
+SLOT_CLOCKS = 24          # the disc passes a slot in 24 clocks: a quadrature state in 6
+START, REVERSE, END = 200, 4_000, 7_000
+THETA0 = 100.3
+BAUD = {"icebreaker": 3_000_000, "ulx3s": 2_000_000}
+
+
+def theta_at(clocks: np.ndarray) -> np.ndarray:
+    c = np.asarray(clocks, dtype=np.float64)
+    cw = np.clip(c - START, 0, REVERSE - START)
+    ccw = np.clip(c - REVERSE, 0, None)
+    return THETA0 + (cw - ccw) / SLOT_CLOCKS
+
+
+def now() -> float:
+    return get_sim_time("ns") / PERIOD_NS
+
+
+def truth(first: float, last: float) -> set[int]:
+    """The disc's hybrid positions from `first` less the core's latency to `last`."""
+    clocks = np.arange(int(first) - core_latency(FILTER) - FILTER - 2, int(last) + 3)
+    return set(Disc(N).hybrid(theta_at(clocks)).tolist())
+
+
+async def read_ssi(dut, half_clocks: int) -> tuple[int, bool, float]:
+    """One Gray SSI frame of N + 2 bits and the error bit: (position, valid, latch clock)."""
+    bits, latched = [], now()
+    for k in range(ST_BITS + 2):
+        dut.ssi_clk.value = 0
+        if k > 0:
+            bits.append(int(dut.ssi_data.value))
+        await Timer(half_clocks * PERIOD_NS, unit="ns")
+        dut.ssi_clk.value = 1
+        await Timer(half_clocks * PERIOD_NS, unit="ns")
+    position, valid = ssi.decode(bits, ST_BITS, True)
+    return position, valid, latched
+
+
+async def ask_host(dut, bit_clocks: int) -> tuple[protocol.Answer, float, float]:
+    """A READ HYBRID request on uart_rx; its answer from uart_tx, and when it went."""
+    sink, parser = UartSink(dut.uart_tx, bit_clocks), protocol.FrameParser()
+    asked = now()
+    await UartSource(dut.uart_rx, bit_clocks).send(protocol.read_request(protocol.Kind.HYBRID))
+    while True:
+        _, byte = await sink.queue.get()
+        frames = parser.feed(bytes([byte]))
+        if frames:
+            return protocol.decode(frames[0]), asked, now()
+
+
+@cocotb.test()
+async def the_netlist_equals_the_rtl_clock_for_clock(dut):
+    board, clk_hz = os.environ["PRENC_BOARD"], int(os.environ["PRENC_CLK_HZ"])
+    for pin in ("head1", "head2", "sync_a", "sync_b"):
+        getattr(dut, pin).value = 0
+    dut.ssi_clk.value = 1
+    dut.ssi_gray.value = 1
+    dut.biss_ma.value = 1
+    dut.uart_rx.value = 1
+    cocotb.start_soon(Clock(dut.clk, PERIOD_NS, unit="ns").start())
+    await ClockCycles(dut.clk, START)
+    if os.environ.get("PRENC_EXPECT") == "mismatch":  # the RTL was edited: it must show
+        mismatches = int(dut.mismatches.value)
+        dut._log.info("%s with an edited RTL: %d mismatches in %d clocks", board, mismatches, START)
+        assert mismatches > 0, "the netlist simulation did not see the RTL's difference"
+        return
+    cocotb.start_soon(drive_encoder(dut, theta_at, disc=Disc(N)))
+    master = Master(dut, clk_hz / 5, clk_hz, ma="biss_ma", slo="biss_slo")
+    checked = {"biss": 0, "ssi": 0, "host": 0}
+    await ClockCycles(dut.clk, 1_000)
+    for phase_end in (REVERSE, END):
+        asked = []
+        reading, _ = await master.read(MT_BITS, ST_BITS, on_start=lambda: asked.append(now()))
+        assert reading.crc_ok and not reading.error, reading
+        assert reading.turns == 0 and reading.position in truth(asked[0], asked[0]), (asked, reading)
+        checked["biss"] += 1
+        await Timer(master.timeout_ns(), unit="ns")
+        position, valid, latched = await read_ssi(dut, 5)
+        assert valid and position in truth(latched, latched), (latched, position)
+        checked["ssi"] += 1
+        await ClockCycles(dut.clk, round(25e-6 * clk_hz))  # SSI's monoflop time
+        if os.environ.get("PRENC_HOST_BAUD") and phase_end == REVERSE:
+            answer, first, last = await ask_host(dut, clk_hz // int(os.environ["PRENC_HOST_BAUD"]))
+            assert answer.valid and answer.values["position"] in truth(first, last), (first, last, answer)
+            checked["host"] += 1
+        await ClockCycles(dut.clk, max(1, int(phase_end - now()) + 400))
+    await FallingEdge(dut.clk)
+    mismatches, clocks = int(dut.mismatches.value), int(dut.clocks.value)
+    dut._log.info("%s: %d clocks compared, %d mismatches; read %s", board, clocks, mismatches, checked)
+    assert mismatches == 0, f"the netlist differed from the RTL at {mismatches} falling edges (first: see the log)"
+
+
+def prepare(board: str, where: Path, rtl_edit=None) -> tuple[list[Path], dict[str, str], list[str]]:
+    """The netlist of the board build, the pair, and the sources to simulate; with
+    `rtl_edit` (path, old, new), the RTL is first copied and that text replaced."""
+    import pair
+    import synth
+
+    if where.exists():
+        shutil.rmtree(where)
+    where.mkdir(parents=True)
+    b = synth.BOARDS[board]
+    rtl = synth.file_list(b.folder / f"{b.top}.f")
+    if rtl_edit is not None:
+        path, old, new = rtl_edit
+        copied = where / "rtl" / Path(path).name
+        copied.parent.mkdir()
+        text = Path(path).read_text()
+        assert text.count(old) == 1, f"{old!r} must occur once in {path}"
+        copied.write_text(text.replace(old, new))
+        rtl = [copied if p.resolve() == Path(path).resolve() else p for p in rtl]
+    parameters: dict[str, object] = {"N": N, "TAPS": 0x204, "ROM_FILE": rom_file(N)}
+    if board in BAUD:
+        parameters["BAUD"] = BAUD[board]
+    net = pair.netlist(board, where, parameters, rtl)
+    sources = [*pair.cell_library(board, where), *rtl, net, pair.pair_verilog(board, where, parameters)]
+    env = {"PRENC_BOARD": board, "PRENC_CLK_HZ": str(pair.BOARD_PINS[board].clk_hz)}
+    if board in BAUD:
+        env["PRENC_HOST_BAUD"] = str(BAUD[board])
+    # Icarus takes no default values on input ports: every cell input is connected.
+    args = ["-DNO_ICE40_DEFAULT_ASSIGNMENTS"]
+    return sources, env, args
+
+
+@pytest.mark.parametrize("board", ["icestick", "icebreaker", "ulx3s"])
+def test_board_netlist(board):
+    sources, env, args = prepare(board, SIM_BUILD / "netlist" / board)
+    run(__file__, "board_pair", "icarus", sources=sources, extra_env=env, build_args=args,
+        parameters={"BUILD": board})
+
+
+def test_a_register_without_its_reset_is_caught():
+    from runner import RTL
+
+    edit = (RTL / "core" / "prenc_mode_fsm.v", "      mode_reg        <= ACQUIRE;\n", "")
+    sources, env, args = prepare("icestick", SIM_BUILD / "netlist" / "icestick-edited", edit)
+    run(__file__, "board_pair", "icarus", sources=sources, extra_env=env | {"PRENC_EXPECT": "mismatch"},
+        build_args=args, parameters={"BUILD": "icestick-edited"})
