@@ -22,8 +22,9 @@
    core (its clock-level model, which the RTL equals clock for clock in
    tb/core/prenc_core) beside the plain verifying reader (prenc.virtual.plain_reader: drop
    everything on any disagreement, re-verify N + 1 strobes), at FILTER 0 and 3,
-   with the wrong valid clocks of each; and beside them the lean-rule design study
-   (prenc.virtual.lean_reader: what a cheaper evidence rule gives up; no RTL).
+   with the wrong valid clocks of each; beside them the core with HYPOTHESES = 0, as the
+   iCEstick's HX1K build has it (what that build gives up), and the lean-rule design
+   study (prenc.virtual.lean_reader: what a cheaper evidence rule gives up; no RTL).
 5. Fault campaign of the RTL core (tb/core/prenc_core/bench_prenc_core.py on Verilator):
    at least 10^5 strobes at N = 10, judged against the true angle clock by clock.
 6. Host link update rate: answers per second of board time when streaming back to
@@ -226,13 +227,15 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                                                                        top=top))))
         except synth.FlowError as err:
             rows.append((what, 10, f"FAILED: {err}"))
+    bram_kbit = {"ice40-up5k": (120, 12), "ice40-hx1k": (64, 11)}  # block RAM, and the largest N it holds
     for name, board in synth.BOARDS.items():
         for n in (10, 16):
             t = synth.TARGETS[board.target]
             rom_kbit = (1 << n) * n / 1024
-            if t.family == "ice40" and rom_kbit > 120:
+            if board.target in bram_kbit and rom_kbit > bram_kbit[board.target][0]:
+                kbit, n_max = bram_kbit[board.target]
                 rows.append((f"{name} board top", n, f"does not fit: the {rom_kbit:.0f} kbit ROM exceeds the "
-                             f"UP5K's 120 kbit of block RAM (N <= 12 fits)"))
+                             f"{t.name}'s {kbit} kbit of block RAM (N <= {n_max} fits)"))
                 continue
             out = SIM_BUILD / "bench" / "synth" / f"{name}-n{n}"
             try:
@@ -597,20 +600,23 @@ def goals_section() -> bool:
 
     n, failed = 10, False
     print("\n4b. The core's goals (N = 10): share of clocks valid / slots to the first valid position")
+    print("   (iCEstick: the core as the HX1K build has it, HYPOTHESES = 0, no hypotheses after a missed state)")
     print(f"   {'scenario':<27} {'F':>2} {'core':>15} {'plain reader':>15} {'core / plain':>12} {'goal':>12} "
-          f"{'wrong':>9} {'lean study':>15}")
+          f"{'wrong':>9} {'iCEstick':>15} {'lean study':>15}")
     for filter_len in (0, 3):
         for g in goals(n):
             enc = g.run(n)
             a = measure(g, Reader(Code(n), filter_len), n, filter_len, enc)
             b = measure(g, PlainReader(Code(n), filter_len), n, filter_len, enc)
             c = measure(g, LeanReader(Code(n), filter_len), n, filter_len, enc)
-            failed |= a.wrong != 0 or c.wrong != 0
+            d = measure(g, Reader(Code(n), filter_len, hypotheses=False), n, filter_len, enc)
+            failed |= a.wrong != 0 or c.wrong != 0 or d.wrong != 0
             fv = lambda m: "never" if m.first_valid is None else f"{m.first_valid:.1f}"
             ratio = f"{a.availability / b.availability:.2f}x" if b.availability else "inf"
             goal = f">={g.availability:.2f}" + (f" <={g.first_valid}" if g.first_valid else "")
             print(f"   {g.name:<27} {filter_len:>2} {a.availability:>7.3f} {fv(a):>7} {b.availability:>7.3f} "
                   f"{fv(b):>7} {ratio:>12} {goal:>12} {a.wrong:>4}/{b.wrong:<4} "
+                  f"{d.availability:>7.3f} {fv(d):>7} ({d.wrong} wrong{'' if d.meets(g) else ', short'}) "
                   f"{c.availability:>7.3f} {fv(c):>7} ({c.wrong} wrong{'' if c.meets(g) else ', short'})"
                   + ("" if a.meets(g) else "  short of goal"))
     return failed

@@ -168,3 +168,15 @@ def test_a_calibration_table_that_does_not_fit_the_build_is_refused(tmp_path):
         synth.cal_for(str(tmp_path / "missing.cal"), 10, ulx3s, tmp_path / "out")
     with pytest.raises(synth.FlowError, match="without the fine position"):
         synth.cal_for(str(good), 10, icebreaker, tmp_path / "out")
+
+
+@pytest.mark.parametrize("target,floor_mhz,parameters", [("ice40-hx8k", 100.0, {}),
+                                                         ("ecp5-25k", 120.0, {"CONV_REG": 1})],
+                         ids=["hx8k-100MHz", "ecp5-conv-reg-120MHz"])
+def test_the_core_keeps_its_clock_floors(target, floor_mhz, parameters):
+    """The floors that stop a regression of the core's speed (issue 39): the core alone
+    placed and routed at 100 MHz on the HX8K, and at 120 MHz on ECP5 with CONV_REG = 1;
+    the flow fails on a missed constraint (placer seed 1; the bench gives seeds 1-3)."""
+    out = SIM_BUILD / "boards" / f"core-floor-{target}"
+    result = synth.core_build(target, 10, floor_mhz, out, parameters=parameters)
+    assert result.timing_met and result.fmax >= floor_mhz, result.clocks
