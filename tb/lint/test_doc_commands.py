@@ -28,7 +28,7 @@ DOCS = [REPO / "README.md", *sorted((REPO / "docs" / "guide").glob("*.md"))]
 # (the command's pattern, the test file that runs it, words that file must contain)
 COVERED = [
     (r"make test", ".ci/run", ["make test"]),
-    (r"make synth BOARD=(icebreaker|ulx3s)", "tb/lint/test_boards.py",
+    (r"make synth BOARD=(icebreaker|icestick|ulx3s)", "tb/lint/test_boards.py",
      ["def test_board_builds_and_meets_timing", "synth.BOARDS", "board_build"]),
     (r"\.venv/bin/python scripts/synth\.py --core ice40-hx8k", "tb/lint/test_boards.py", ['"--core"', "ice40-hx8k"]),
     (r"\.venv/bin/python scripts/synth\.py --core ice40-up5k --top prenc_core_harness", "tb/lint/test_boards.py",
