@@ -104,7 +104,7 @@ class Bridge:
     async def _snapshots(self) -> None:
         while True:
             await RisingEdge(self.dut.clk)
-            if int(self.dut.u_link.snapshot.value):
+            if int(self.dut.g_host_link.u_link.snapshot.value):
                 self.snapshots.append(round(get_sim_time("ns") / PERIOD_NS))
 
     def snapshot_of(self, seq: int) -> int:
