@@ -83,6 +83,12 @@ def ports(board: str, out: Path) -> dict[str, tuple[str, int]]:
     return {name: (p["direction"], len(p["bits"])) for name, p in module["ports"].items()}
 
 
+def _value(value: object) -> str:
+    """A parameter value for the simulator: a path whole (synth.literal makes it relative
+    to the repository, for YoWASP)."""
+    return f'"{value}"' if isinstance(value, Path) else synth.literal(value)
+
+
 def pair_verilog(board: str, out: Path, parameters: dict[str, object]) -> Path:
     """`board_pair` for the board, into <out>/board_pair.v: the RTL top with `parameters`
     (those the netlist was synthesized with). Its parameter BUILD only names the build."""
@@ -102,6 +108,8 @@ def pair_verilog(board: str, out: Path, parameters: dict[str, object]) -> Path:
         bits = pins.pins.get(name, (None,) * width if direction == "output" else None)  # LEDs: compared only
         if bits is None or len(bits) != width:
             raise ValueError(f"{board}: port {name} ({direction}, {width} bits) is not in BOARD_PINS")
+        if direction == "inout":  # Yosys ties an inout's undriven bits to 0 (the ULX3S's GN0, GN1 were)
+            raise ValueError(f"{board}: port {name} is inout: give the top inputs and outputs only")
         if direction == "input":
             driven = ", ".join(("1'b" + b) if b in ("0", "1") else (b or "1'b0") for b in reversed(bits))
             lines.append(f"  wire [{width - 1}:0] {name}_in = {{{driven}}};")
@@ -110,17 +118,13 @@ def pair_verilog(board: str, out: Path, parameters: dict[str, object]) -> Path:
             continue
         for side in ("rtl", "net"):
             lines.append(f"  wire [{width - 1}:0] {name}_{side};")
-            for i, b in enumerate(bits):
-                if b in INPUTS:  # an inout bit the board reads
-                    lines.append(f"  assign {name}_{side}[{i}] = {b};")
         rtl_conn.append(f".{name}({name}_rtl)")
         net_conn.append(f".{name}({name}_net)")
         compared.append(name)
         for i, b in enumerate(bits):
             if b in OUTPUTS:
                 lines.append(f"  assign {b} = {name}_rtl[{i}];")
-    settings = ", ".join(f".{k}({synth.literal(v) if not isinstance(v, Path) else chr(34) + str(v) + chr(34)})"
-                         for k, v in parameters.items())
+    settings = ", ".join(f".{k}({_value(v)})" for k, v in parameters.items())
     lines += ["", f"  {top} #({settings}) rtl (", "    " + ",\n    ".join(rtl_conn), "  );", "",
               f"  {top}_netlist net (", "    " + ",\n    ".join(net_conn), "  );", ""]
     rtl_all = "{" + ", ".join(f"{n}_rtl" for n in compared) + "}"
