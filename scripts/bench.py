@@ -567,7 +567,8 @@ def cal_logic_rows(c_true) -> list[str]:
         except synth.FlowError as err:
             rows.append(f"ULX3S board top{', CAL = 1' if cal else ''}: FAILED: {err}")
     rows.append("iCEBreaker: no table (it builds the board without the fine position, FINE = 0); "
-                "prenc_edge_capture is built on every board")
+                "iCEstick: no fine position and no host link (HOST_LINK = 0); prenc_edge_capture is built on "
+                "every board with the host link")
     return rows
 
 

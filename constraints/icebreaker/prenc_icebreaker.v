@@ -2,8 +2,8 @@
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
 //   12 MHz (pin 35) -> SB_PLL40_PAD -> 30 MHz system clock: 3 Mbaud is 10 clocks per bit,
-//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at 32 to 33 MHz
-//   (placer seeds 1 to 5).
+//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at 31.2 MHz
+//   (make bench, placer seed 1; the seed moves it by about +-5 %).
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
@@ -96,7 +96,7 @@ module prenc_icebreaker #(
     .ROM_FILE (ROM_FILE),
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
-    .FINE     (0)  // the UP5K's 5,280 cells hold the board (2,546) but not prenc_fine (~4,000)
+    .FINE     (0)  // the UP5K's 5,280 cells hold the board (3,138) but not prenc_fine (~4,000)
   ) u_board (
     .clk             (clk),
     .rst             (rst),
