@@ -23,7 +23,7 @@ host's answer the same.
 The host link runs at 3 Mbaud on the iCEBreaker and 5 Mbaud on the ULX3S (10 clocks
 per bit on both, `make synth BAUD=...`; the ULX3S's FTDI goes to 3 Mbaud), so that its
 frames take a few thousand clocks; the builds are otherwise the boards' own. The ECP5
-netlist is the slow one on Icarus (about 130 clocks a second: its carry chains ripple
+netlist is the slow one on Icarus (about 150 clocks a second: its carry chains ripple
 through CCU2C cells), so the scenario is kept to about 6,000 clocks there.
 
 `test_a_register_without_its_reset_is_caught`: the same on the iCEstick with one
