@@ -308,14 +308,20 @@ def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
     return {"CAL": 1, "CAL_FILE": table.write(out / "calibration.hex")}
 
 
-def board_build(board: Board, bits: int, out: Path, baud: int | None = None, cal: str | None = None) -> Result:
-    rom = rom_for(bits, out)
-    sources = file_list(board.folder / f"{board.top}.f")
-    params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom}
+def board_parameters(board: Board, bits: int, out: Path, baud: int | None = None,
+                     cal: str | None = None) -> dict[str, object]:
+    """The board top's parameters for a build (the ROM, and a table file, written into `out`)."""
+    params: dict[str, object] = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom_for(bits, out)}
     if baud:
         params["BAUD"] = baud
     if cal:
         params.update(cal_for(cal, bits, board, out))
+    return params
+
+
+def board_build(board: Board, bits: int, out: Path, baud: int | None = None, cal: str | None = None) -> Result:
+    params = board_parameters(board, bits, out, baud, cal)
+    sources = file_list(board.folder / f"{board.top}.f")
     return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins)
 
 

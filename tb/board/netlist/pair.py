@@ -42,7 +42,6 @@ class BoardPins:
 
     clock: str
     pins: dict[str, tuple[str | None, ...]]
-    clk_hz: int
     host_link: bool
 
 
@@ -52,18 +51,18 @@ BOARD_PINS = {
         "PMOD1": ("head1",), "PMOD2": ("head2",), "PMOD3": ("sync_a",), "PMOD4": ("sync_b",),
         "PMOD7": ("ssi_clk",), "PMOD8": ("ssi_data",), "PMOD9": ("ssi_gray",),
         "J1_3": ("biss_ma",), "J1_4": ("biss_slo",),
-    }, 48_000_000, host_link=False),
+    }, host_link=False),
     "icebreaker": BoardPins("CLK", {
         "BTN_N": ("1",), "RX": ("uart_rx",), "TX": ("uart_tx",),
         "P1A1": ("head1",), "P1A2": ("head2",), "P1A3": ("sync_a",), "P1A4": ("sync_b",),
         "P1A7": ("ssi_clk",), "P1A8": ("ssi_data",), "P1A9": ("ssi_gray",),
         "P1B1": ("biss_ma",), "P1B2": ("biss_slo",),
-    }, 30_000_000, host_link=True),
+    }, host_link=True),
     "ulx3s": BoardPins("clk_25mhz", {
         "btn": ("0",), "ftdi_txd": ("uart_rx",), "ftdi_rxd": ("uart_tx",),
         "gp": ("head1", "sync_a", "ssi_clk", "ssi_gray", "biss_ma"),
         "gn": ("head2", "sync_b"), "gn2": ("ssi_data",), "gn4": ("biss_slo",),
-    }, 50_000_000, host_link=True),
+    }, host_link=True),
 }
 
 

@@ -55,7 +55,7 @@ from common import PERIOD_NS  # noqa: E402
 from prenc.board import protocol, ssi  # noqa: E402
 from prenc.virtual.encoder import Disc  # noqa: E402
 from prenc.virtual.scenarios import core_latency  # noqa: E402
-from runner import SIM_BUILD, rom_file, run  # noqa: E402
+from runner import SIM_BUILD, run  # noqa: E402
 from uart import UartSink, UartSource  # noqa: E402
 
 pytestmark = pytest.mark.synth  # Yosys makes the netlists
@@ -172,13 +172,11 @@ def prepare(board: str, where: Path, rtl_edit=None) -> tuple[list[Path], dict[st
         assert text.count(old) == 1, f"{old!r} must occur once in {path}"
         copied.write_text(text.replace(old, new))
         rtl = [copied if p.resolve() == Path(path).resolve() else p for p in rtl]
-    parameters: dict[str, object] = {"N": N, "TAPS": 0x204, "ROM_FILE": rom_file(N)}
     host_link = pair.BOARD_PINS[board].host_link
-    if host_link:
-        parameters["BAUD"] = BAUD[board]
+    parameters = synth.board_parameters(b, N, where, baud=BAUD[board] if host_link else None)  # as make synth
     net = pair.netlist(board, where, parameters, rtl)
     sources = [*pair.cell_library(board, where), *rtl, net, pair.pair_verilog(board, where, parameters)]
-    env = {"PRENC_BOARD": board, "PRENC_CLK_HZ": str(pair.BOARD_PINS[board].clk_hz)}
+    env = {"PRENC_BOARD": board, "PRENC_CLK_HZ": str(round(b.clock_mhz * 1e6))}
     if host_link:
         env["PRENC_HOST_BAUD"] = str(BAUD[board])
     # Icarus takes no default values on input ports: every cell input is connected.
