@@ -6,10 +6,9 @@
     pair_verilog()   `board_pair`: the RTL top and the netlist side by side on the same
                      pins, and every output of the two compared at every falling edge
                      of the clock (`!==`: an X or Z where the other has a level counts)
-    sources()        the netlist, the RTL, the pair, and the cell models: Yosys's own
-                     (cells_sim.v) for every cell it has a model of, and
-                     tb/board/netlist/models/ for the PLLs and ECP5's DP16KD, which
-                     Yosys ships as boxes without behaviour
+    cell_library()   the vendor cell models: Yosys's own (cells_sim.v) for every cell it
+                     has a model of, and tb/board/netlist/models/ for the PLLs and
+                     ECP5's DP16KD, which Yosys ships as boxes without behaviour
 
 `board_pair` has the board's signals under the names prenc_board uses (head1, ...,
 ssi_clk, ssi_data, biss_ma, biss_slo, uart_rx, uart_tx), whatever the board calls its

@@ -35,7 +35,6 @@ and the comparison must see the difference in the first clocks.
 from __future__ import annotations
 
 import os
-import re
 import shutil
 import sys
 from pathlib import Path
