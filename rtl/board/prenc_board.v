@@ -44,6 +44,10 @@
 //   EXTRAPOLATE   1: SSI's and BiSS-C's position is extrapolated by the velocity to the
 //                 master's request (default); 0: the position as the pipeline has it
 //   VELOCITY_WINDOW   prenc_velocity's WINDOW, the shortest window in clocks (2048)
+//   QUARTER_WINDOWS   prenc_velocity's: 1, velocity windows between any edges of the
+//                 sync track, for an accurate or calibrated disc (with VELOCITY_WINDOW
+//                 640 at 30 MHz: follows acceleration within a quarter or two); 0: full sync
+//                 cycles, whose A/B phase and duty errors cancel (default, printed discs)
 //   CAL           1: the fine position and the velocity use the sync track's calibration
 //                 table (docs/calibration.md; needs FINE = 1), written over the host
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
@@ -85,6 +89,7 @@ module prenc_board #(
   parameter integer FINE_BITS       = 0,
   parameter integer EXTRAPOLATE     = 1,
   parameter integer VELOCITY_WINDOW = 2048,
+  parameter integer QUARTER_WINDOWS = 0,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
@@ -252,6 +257,7 @@ module prenc_board #(
     .FINE_BITS        (F),
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (VELOCITY_WINDOW),
+    .QUARTER_WINDOWS  (QUARTER_WINDOWS),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)

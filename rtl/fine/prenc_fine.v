@@ -28,7 +28,7 @@
 //
 // Parameters
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
-//   WINDOW, TIMER_BITS               prenc_velocity's (2048, 26)
+//   WINDOW, TIMER_BITS, QUARTER_WINDOWS   prenc_velocity's (2048, 26, 0)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
@@ -50,6 +50,7 @@ module prenc_fine #(
   parameter integer LOOKAHEAD_HALVES = 0,
   parameter integer WINDOW           = 2048,
   parameter integer TIMER_BITS       = 26,
+  parameter integer QUARTER_WINDOWS  = 0,
   parameter integer ENABLE           = 1,
   parameter integer CAL              = 0,
   parameter         CAL_FILE         = ""
@@ -208,7 +209,8 @@ module prenc_fine #(
       prenc_velocity #(
         .WINDOW     (WINDOW),
         .TIMER_BITS (TIMER_BITS),
-        .CAL        (CAL)
+        .CAL        (CAL),
+        .QUARTER_WINDOWS (QUARTER_WINDOWS)
       ) u_velocity (
         .clk      (clk),
         .rst      (rst),

@@ -13,6 +13,11 @@
 //   is the mean over both windows and accel 0. Otherwise a parabola through the
 //   three anchors: a = 2 (n1/P1 - n2/P2) / (P1 + P2), velocity = n1/P1 + a (P1/2 +
 //   FULL_CLOCKS) on the cycle it is loaded. Between updates velocity += accel.
+// - QUARTER_WINDOWS = 1 (a disc whose edges are accurate, or calibrated): a window
+//   closes on a step over any edge; the windows that pass the test together are a run,
+//   which stands for the window before (the velocity is the mean over the whole run);
+//   a test failed by 16 times its bound fits at once, and a smaller first failure
+//   shows the window's own mean n1/P1.
 // - Before a window closes (after reset, a stop, an illegal transition): the mean
 //   velocity since the window's first step.
 // - A reversal restarts the windows; the velocity takes the new sign at once, with the
@@ -45,6 +50,8 @@
 //   WINDOW       shortest window in clocks, 16..2^(TIMER_BITS-1)-1 (2048: 68 us at 30 MHz)
 //   TIMER_BITS   width of the clocks counted, 12..32 (26: 2.2 s at 30 MHz)
 //   CAL          1: window lengths from the calibration table's corrections; 0: nominal
+//   QUARTER_WINDOWS  1: windows between any edges, runs, fits at one large failure
+//                (for an accurate or calibrated disc); 0: full-cycle windows (printed)
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs (prenc_core's
@@ -60,7 +67,8 @@
 module prenc_velocity #(
   parameter integer WINDOW     = 2048,
   parameter integer TIMER_BITS = 26,
-  parameter integer CAL        = 0
+  parameter integer CAL        = 0,
+  parameter integer QUARTER_WINDOWS = 0
 ) (
   input  wire        clk,
   input  wire        rst,
@@ -87,6 +95,10 @@ module prenc_velocity #(
     if (CAL != 0 && CAL != 1) begin : g_bad_cal
       initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
       prenc_velocity_parameter_CAL_must_be_0_or_1 u_stop ();
+    end
+    if (QUARTER_WINDOWS != 0 && QUARTER_WINDOWS != 1) begin : g_bad_quarter_windows
+      initial $display("ERROR: %m: parameter QUARTER_WINDOWS = %0d must be 0 or 1", QUARTER_WINDOWS);
+      prenc_velocity_parameter_QUARTER_WINDOWS_must_be_0_or_1 u_stop ();
     end
   endgenerate
 
@@ -274,7 +286,16 @@ module prenc_velocity #(
   wire [XB-1:0]        above_low  = diff_reg + n_less_wide;
   wire [XB-1:0]        below_high = n_less_wide - diff_reg;
   wire                 constant = !above_low[XB-1] && !below_high[XB-1];
-  wire                 same = (diff_reg[XB-1] == last_negative_reg) && last_fit_reg;
+  // Quarter windows: |diff| < 16 (n1 + n2) likewise (16 n_less + 15), else a fit at once.
+  wire [XB-1:0]        n_less_16 = {n_less_wide[XB-5:0], 4'b1111};
+  wire [XB-1:0]        above_low_16  = diff_reg + n_less_16;
+  wire [XB-1:0]        below_high_16 = n_less_16 - diff_reg;
+  wire                 big = (QUARTER_WINDOWS == 1) && (above_low_16[XB-1] || below_high_16[XB-1]);
+  wire                 same = big || ((diff_reg[XB-1] == last_negative_reg) && last_fit_reg);
+  // Quarter windows: a window that passes joins the run, while it stays below
+  // 2^(MCB-1) quarters and 2^(TB-1) clocks.
+  wire [MCB:0]         n_run = n_less_reg + 1'b1;
+  wire                 run_fits = (n_run[MCB:MCB-1] == 2'b00) && (p_sum_reg[TB:TB-1] == 2'b00);
   // The fit's acceleration difference and the velocity it loads.
   wire signed [QB:0]   d = {1'b0, v01_reg} - {1'b0, quotient};
   wire [QB:0]          d_abs = d_reg[QB] ? -d_reg : d_reg;
@@ -312,7 +333,7 @@ module prenc_velocity #(
   wire                 n_cal_low = n_cal_sum[MCB+1] || (n_cal_sum == {(MCB + 2){1'b0}});
   wire [MCB-1:0]       n_cal = n_cal_low ? {{(MCB - 1){1'b0}}, 1'b1} : n_cal_sum[MCB-1:0];
   wire [MB-1:0]        n_wide = {{(MB - MCB){1'b0}}, n_cal};
-  wire                 closes = (n[1:0] == 2'b00) &&
+  wire                 closes = (QUARTER_WINDOWS == 1 || n[1:0] == 2'b00) &&
                                 (since_a_reg >= WINDOW[TB-1:0]);
 
   reg [VB-2:0] speed;
@@ -401,10 +422,17 @@ module prenc_velocity #(
         last_negative_n = diff_reg[XB-1];
         last_fit_n = !constant;
         div_start = 1'b1;
-        if (constant || !same) begin
-          div_num = {{(NB - MCB - 1 - FRAC + CALB){1'b0}}, n_less_reg + 1'b1,
-                     {(FRAC - CALB){1'b0}}};
+        if (constant || (!same && QUARTER_WINDOWS == 0)) begin
+          div_num = {{(NB - MCB - 1 - FRAC + CALB){1'b0}}, n_run, {(FRAC - CALB){1'b0}}};
           div_den = p_sum_reg;
+          state_n = S_CONSTANT;
+          if (constant && QUARTER_WINDOWS == 1 && run_fits) begin
+            prev_n_n = n_run[MCB-1:0];
+            prev_clocks_n = p_sum_reg[TB-1:0];
+          end
+        end else if (!same) begin  // quarter windows, one failure: the window's own mean
+          div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n1_reg, {(FRAC - CALB){1'b0}}};
+          div_den = {1'b0, p1_reg};
           state_n = S_CONSTANT;
         end else begin
           div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n1_reg, {(FRAC - CALB){1'b0}}};

@@ -11,23 +11,35 @@ The estimator, on the quadrature decoder's registered step:
 - Each step crosses an edge of the sync track at a known place x in quarters (a CW
   step into quarter h crosses edge h; a CCW step into h crosses edge h + 1).
 - Anchors: the step that opened the current window (A, `since_a` clocks ago) and the
-  window before it (its quarters `prev_n` and clocks `prev_clocks`). A
-  window closes on a step over an edge of A's type (x - x_A a multiple of 4: the same
-  edge of A or B, so A/B phase and duty errors cancel) at least WINDOW clocks after A.
+  window or run before it (its quarters `prev_n` and clocks `prev_clocks`). A window
+  closes at least WINDOW clocks after A on a step over an edge of A's type (x - x_A a
+  multiple of 4: the same edge of A or B, so A/B phase and duty errors cancel).
 - On a window's close with a window before it (n1 quarters in P1 clocks, and n2 in
   P2 before it), first the constant-speed test: if |n1 P2 - n2 P1| < |n1| + |n2|, the
-  two windows agree within their clocks' quantization (each window's length is off
-  by less than a clock), so velocity = (n1 + n2) / (P1 + P2) and accel = 0: the mean
-  over both windows, half the noise of one. If the test failed on the update before
-  too, with the same sign of n1 P2 - n2 P1 (an acceleration that lasts, not one
-  window's noise: a printed disc's edge errors move each window's mean speed by
-  several per cent), the mean velocities fit constant acceleration (a parabola
-  through the three anchors):
+  two agree within their clocks' quantization (each one's length is off by less than
+  a clock), so velocity = (n1 + n2) / (P1 + P2) and accel = 0: the mean over both. If
+  the test failed on the update before too, with the same sign of n1 P2 - n2 P1 (an
+  acceleration that lasts, not one window's noise: a printed disc's edge errors move
+  each window's mean speed by several per cent), the mean velocities fit constant
+  acceleration (a parabola through the three anchors):
       v01 = n1 / P1, v12 = n2 / P2, a = 2 (v01 - v12) / (P1 + P2),
       velocity = v01 + a (P1 / 2 + FULL_CLOCKS),
   FULL_CLOCKS being how long the computation takes, so that the velocity is that of
-  the cycle it is loaded in. Otherwise the mean over both windows, accel 0. Between
-  updates the velocity integrates `accel`.
+  the cycle it is loaded in. Otherwise the mean over both, accel 0. Between updates
+  the velocity integrates `accel`.
+- Quarter windows (quarter_windows = 1), for a disc whose edges are where they should
+  be (an accurate disc, or a printed one with its calibration table; on a printed disc
+  without one, the A/B phase and duty errors enter every window):
+  - a window closes on a step over any edge, at least WINDOW clocks after A;
+  - the run: what is before the closing window is the run of windows that passed
+    the constant-speed test together (at most 2^(bits - 1) quarters and
+    2^(TIMER_BITS - 1) clocks; the last window alone after any other update). A
+    window that passes joins it, and the velocity is the mean over the whole run,
+    whose quantization shrinks as it grows;
+  - a test failed by BIG (16) times its bound or more is an acceleration at once:
+    the fit, with the run as the older anchor; a smaller failure fits if the update
+    before failed with the same sign, and else shows the window's own mean (the run
+    is stale): n1 / P1, accel 0.
 - Before the first window closes (after reset, a stop or an illegal transition): on
   each step, the mean velocity since A, accel 0.
 - A reversal (a step against the last step's direction) restarts the windows; the
@@ -71,6 +83,8 @@ COUNT_BITS = 16            # edge positions, in quarters, modulo 2^COUNT_BITS
 LEAD_LIMIT = 2 << FRAC     # the predicted travel since the last step saturates at 2 quarters
 OVERDUE = 3 << (FRAC - 1)  # 1.5 quarters
 DIV_CLOCKS = QUOTIENT_BITS + 2   # from a division's start cycle to its done cycle
+BIG = 16                   # quarter windows: a constant-speed test failed by BIG times its
+                           # bound fits an acceleration at once
 
 
 def full_clocks(timer_bits: int, cal_bits: int = 0) -> int:
@@ -125,7 +139,10 @@ class Velocity:
     (IDLE, MEAN, CROSS1, CROSS2, DECIDE, CONSTANT, FIT_V01, FIT_V12, FIT_D, FIT_A, FIT_MUL,
      FIT_LOAD, DECAY) = range(13)
 
-    def __init__(self, window: int = 2048, timer_bits: int = 26, cal_bits: int = 0):
+    def __init__(self, window: int = 2048, timer_bits: int = 26, cal_bits: int = 0,
+                 quarter_windows: int = 0):
+        if quarter_windows not in (0, 1):
+            raise ValueError(f"quarter_windows = {quarter_windows} must be 0 or 1")
         if not 12 <= timer_bits <= 32:
             raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
         if not 16 <= window < (1 << (timer_bits - 1)):
@@ -135,6 +152,7 @@ class Velocity:
         self.window = window
         self.timer_bits = timer_bits
         self.cal_bits = cal_bits
+        self.quarter_windows = quarter_windows
         self.mul_bits = COUNT_BITS + cal_bits
         self.timer_max = (1 << timer_bits) - 1
         self.full_clocks = full_clocks(timer_bits, cal_bits)
@@ -157,7 +175,7 @@ class Velocity:
         self.x_a = 0
         self.c_a = 0            # the correction of A's edge (calibration table)
         self.since_a = 0
-        self.have_prev = 0      # the window before: its quarters and clocks
+        self.have_prev = 0      # the run before: its quarters and clocks
         self.prev_n = 0
         self.prev_clocks = 0
         self.n1 = 0             # the window being closed: quarters (magnitude), clocks
@@ -241,10 +259,22 @@ class Velocity:
         elif state == self.DECIDE:
             diff = self.diff
             constant = -(self.n1 + self.n2) < diff < self.n1 + self.n2
-            same = int(diff < 0) == self.last_negative and self.last_fit
+            # With quarter windows, a failure by 16 times the quantization or more is an
+            # acceleration at once.
+            big = self.quarter_windows and not -BIG * (self.n1 + self.n2) < diff < BIG * (self.n1 + self.n2)
+            same = big or (int(diff < 0) == self.last_negative and self.last_fit)
             self.last_negative, self.last_fit = int(diff < 0), int(not constant)
-            if constant or not same:
+            if constant or (not same and not self.quarter_windows):
                 start, num, den = 1, (self.n1 + self.n2) << (FRAC - self.cal_bits), self.p1 + self.p2
+                self.state = self.CONSTANT
+                # The window joins the run (the close made it the run alone), unless
+                # the run would grow too long.
+                if constant and self.quarter_windows and self.n1 + self.n2 < (1 << (self.mul_bits - 1)) \
+                        and self.p1 + self.p2 < (1 << (self.timer_bits - 1)):
+                    self.prev_n, self.prev_clocks = self.n1 + self.n2, self.p1 + self.p2
+            elif not same:
+                # Quarter windows, one failed test: the run is stale; the window's own mean.
+                start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
                 self.state = self.CONSTANT
             else:
                 start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
@@ -334,7 +364,7 @@ class Velocity:
                 self.have_prev = self.last_fit = 0
                 self.have_a, self.x_a, self.c_a, since_a_n = 1, x, step_c, 1
             elif idle:
-                closes = (n & 3) == 0 and self.since_a >= self.window
+                closes = ((n & 3) == 0 or self.quarter_windows) and self.since_a >= self.window
                 self.sign = 1 if step_cw else -1
                 if closes and self.have_prev:
                     self.n1, self.p1, self.n2, self.p2 = n_cal, self.since_a, self.prev_n, self.prev_clocks

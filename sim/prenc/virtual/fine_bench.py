@@ -12,8 +12,11 @@ fine blocks see from the core:
   fine blocks alone (the core's promise has its own tests and goals).
 
 Then it runs the models of rtl/fine/ (prenc.fine.velocity, prenc.fine.fine_position)
-clock by clock, and three velocity estimators that users pick instead, each with the
-same interpolation and extrapolation for its fine position:
+clock by clock, in two configurations: the default (full-cycle windows, WINDOW = 2048,
+for any disc: "ours") and quarter windows (QUARTER_WINDOWS = 1, WINDOW = 640, for a disc
+whose edges are accurate or calibrated: "quarter"); and three velocity estimators that
+users pick instead, each with the same interpolation and extrapolation for its fine
+position:
 
 - period: the time between the last two same-type edges (a full cycle), bounded
   by the time since the last edge (the dVRK firmware's running period);
@@ -46,6 +49,8 @@ N = 10
 FILTER = 2
 FINE_BITS = 8
 WINDOW = 2048
+QUARTER_WINDOW = 640          # the shortest window with QUARTER_WINDOWS = 1 (21 us; below a
+                              # quarter at 600 rpm, where the ramp starts)
 SAMPLE_CLOCKS = 3000          # the baselines' sampling period: 100 us at 30 MHz (10 kHz)
 DECODER_DELAY = 2 + FILTER + 1  # pins -> the decoder's registered step
 POSITION_DELAY = 4              # decoder -> pos_hyb
@@ -97,9 +102,10 @@ def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N) -> Syn
 
 
 def run_fine(sync: Sync, window: int = WINDOW, fine_bits: int = FINE_BITS,
-             lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N) -> dict[str, np.ndarray]:
+             lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N,
+             quarter_windows: int = 0) -> dict[str, np.ndarray]:
     """The models of prenc_velocity and prenc_fine_position, clock by clock."""
-    vel = Velocity(window=window)
+    vel = Velocity(window=window, quarter_windows=quarter_windows)
     fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
     total = len(sync.step)
     v_out = np.zeros(total)
@@ -291,12 +297,15 @@ def score(case: Case, sync: Sync, fine_quarters: np.ndarray, velocity: np.ndarra
 
 
 def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
-    """The coarse position, ours and the three baselines in one case."""
+    """The coarse position, ours in both configurations and the three baselines in one
+    case."""
     sync = sync_stream(case.theta, printing)
     ours = run_fine(sync)
+    quarter = run_fine(sync, window=QUARTER_WINDOW, quarter_windows=1)
     scale = 1 << FINE_BITS
     rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
-            "ours": score(case, sync, ours["fine"] / scale, ours["velocity"])}
+            "ours": score(case, sync, ours["fine"] / scale, ours["velocity"]),
+            "quarter": score(case, sync, quarter["fine"] / scale, quarter["velocity"])}
     for name, velocity in (("period", period_velocity(sync)), ("mixed", sampled_velocity(sync, True)),
                            ("count", sampled_velocity(sync, False))):
         rows[name] = score(case, sync, interpolate(sync, velocity) / scale, velocity)

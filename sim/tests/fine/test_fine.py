@@ -47,12 +47,14 @@ def test_the_sync_stream_is_the_decoders_output_clock_by_clock():
     assert np.array_equal(sync.pos_hyb[4:], (h0 + np.cumsum(steps)[:-4]) % (4 << fb.N))
 
 
+@pytest.mark.parametrize("quarter_windows", [0, 1])
 @pytest.mark.parametrize("rpm", [10, 600, 6000, 10000])
-def test_steady_speed_meets_the_goals_on_an_ideal_disc(rpm):
+def test_steady_speed_meets_the_goals_on_an_ideal_disc(rpm, quarter_windows):
     # Goals of issue 37: fine position <= 1/256 slot RMS, velocity within 0.05 %.
     theta = steady(rpm, slots=max(12.0, 30 * fb.rpm(rpm) * fb.WINDOW / fb.CLK_HZ))
     sync = fb.sync_stream(theta, None)
-    out = fb.run_fine(sync)
+    out = fb.run_fine(sync, window=fb.QUARTER_WINDOW if quarter_windows else fb.WINDOW,
+                      quarter_windows=quarter_windows)
     c = np.arange(len(theta) // 2, len(theta) - 1)
     err = fb.position_error(out["fine"][c] / (1 << fb.FINE_BITS), theta[c + 1])
     truth = 4 * fb.rpm(rpm) / fb.CLK_HZ
@@ -78,6 +80,28 @@ def test_constant_acceleration_is_followed_without_lag():
     assert np.sqrt(np.mean(v_err ** 2)) <= 0.001, np.sqrt(np.mean(v_err ** 2))
 
 
+def test_quarter_windows_follow_a_ramp_from_its_first_quarters():
+    # 600 -> 6,000 rpm in 4 ms on an ideal disc (issue 37's ramp): with quarter windows
+    # the velocity is within 1 % RMS over the whole ramp, and within 1 % at every clock
+    # from 250 us after the jerk; full-cycle windows see the jerk only a slot or two later.
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 2e-3)
+    start = len(traj.theta)
+    theta = traj.accelerate(fb.rpm(6000), 4e-3).theta
+    sync = fb.sync_stream(theta, None)
+    c = np.arange(start, len(theta) - 1)
+    truth = 4 * (theta[c + 1] - theta[c])
+    rms = {}
+    for quarter_windows in (0, 1):
+        out = fb.run_fine(sync, window=fb.QUARTER_WINDOW if quarter_windows else fb.WINDOW,
+                          quarter_windows=quarter_windows)
+        v_err = (out["velocity"][c] - truth) / truth
+        rms[quarter_windows] = np.sqrt(np.mean(v_err ** 2))
+        if quarter_windows:
+            settled = v_err[int(fb.RAMP_SETTLE_S * fb.CLK_HZ):]
+            assert np.abs(settled).max() <= 0.01, np.abs(settled).max()
+    assert rms[1] <= 0.01 < rms[0], rms
+
+
 @pytest.mark.parametrize("braking_ms", [1.0, 0.0])
 def test_velocity_reads_zero_within_two_edge_periods_of_a_stop(braking_ms):
     # A stop after braking evenly, and an abrupt one. The disc stops at `stopped` (as the
@@ -95,11 +119,12 @@ def test_velocity_reads_zero_within_two_edge_periods_of_a_stop(braking_ms):
     assert (out["velocity"][zero:] == 0).all() and out["velocity_valid"][zero:].all()
 
 
-def test_the_velocity_never_points_against_the_last_step():
+@pytest.mark.parametrize("quarter_windows", [0, 1])
+def test_the_velocity_never_points_against_the_last_step(quarter_windows):
     theta = (Trajectory(clk_hz=1, start=50.4).constant(0.01, 3000)
              .random_walk(60_000, max_speed=0.02, seed=3, knot_seconds=700).theta)
     sync = fb.sync_stream(theta, None)
-    out = fb.run_fine(sync, window=128)
+    out = fb.run_fine(sync, window=128, quarter_windows=quarter_windows)
     direction = np.where(sync.cw == 1, 1, -1)
     last_step = np.maximum.accumulate(np.where(sync.step == 1, np.arange(len(theta)), 0))
     # run_fine records the registers after each clock: the step of clock c is in them.

@@ -13,7 +13,9 @@ constant-speed test, the fit, the decay after an overdue edge, the hold at zero
 speed before a reversal, the stop, the time-out) happen in a short run; the test
 counts them. With CAL = 1 the disc is a printed one and the block reads its calibration
 table from a file; the stimulus rewrites some of its words (a little off) while the
-disc turns, some near the quarter in use.
+disc turns, some near the quarter in use. With QUARTER_WINDOWS = 1 the windows close on
+any edge, and the test counts the decisions: a window joining a run, a fit, a fit at a
+single large failure and a first small failure (the window's own mean).
 """
 
 from __future__ import annotations
@@ -100,24 +102,33 @@ def stimulus(seed: int, cal: int) -> tuple[dict[str, np.ndarray], int]:
 async def matches_the_models_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_FINE_SEED", rng().randrange(1 << 30)))  # replay a draw
     cal = int(dut.CAL.value)
+    quarter = int(dut.QUARTER_WINDOWS.value)
     inputs, total = stimulus(seed, cal)
     table = read(os.environ["PRENC_CAL_FILE"], n=N).c if cal else None
     model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
-                 timer_bits=TIMER_BITS, cal=cal, table=table)
+                 timer_bits=TIMER_BITS, cal=cal, table=table, quarter_windows=quarter)
     vel = model.velocity
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     seen = {state: 0 for state in range(13)}
     stops = holds = looked_up = 0
+    decisions = {"run": 0, "fit": 0, "fit at once": 0, "one failure": 0}
     columns = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in columns)))
         before = vel.velocity
+        deciding, last_fit, run_before = vel.state == vel.DECIDE, vel.last_fit, vel.prev_clocks
         model.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], now["illegal"],
                     write=now["cal_write"], address=now["cal_address"],
                     data=now["cal_data"] - ((now["cal_data"] & 0x8000) << 1))
         seen[vel.state] += 1
+        if deciding and vel.state == vel.FIT_V01:
+            decisions["fit" if last_fit else "fit at once"] += 1
+        elif deciding and vel.prev_clocks != run_before:
+            decisions["run"] += 1
+        elif deciding and vel.last_fit and not last_fit:
+            decisions["one failure"] += 1
         stops += int(before != 0 and vel.velocity == 0)
         holds += vel.held
         looked_up += int(cal and model.lookup.ok)
@@ -126,19 +137,22 @@ async def matches_the_models_clock_by_clock(dut):
                     "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
                     "fine_valid": model.fine_valid, "interpolated": model.interpolated}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
-    dut._log.info("seed %d, CAL %d: %d clocks, cycles per sequencer state %s, %d stops, "
-                  "%d clocks held, %d with both words of the table", seed, cal, total, seen,
-                  stops, holds, looked_up)
+    dut._log.info("seed %d, CAL %d, QUARTER_WINDOWS %d: %d clocks, cycles per sequencer state "
+                  "%s, %d stops, %d clocks held, %d with both words of the table, decisions %s",
+                  seed, cal, quarter, total, seen, stops, holds, looked_up, decisions)
     assert all(seen[s] > 0 for s in range(13)), seen   # every state of the sequencer ran
     assert stops >= 2 and holds > 0
     assert not cal or looked_up > 0.9 * total
+    assert decisions["fit"] > 0
+    assert not quarter or min(decisions.values()) > 0, decisions
 
 
-@pytest.mark.parametrize("cal", [0, 1])
+@pytest.mark.parametrize("cal, quarter", [(0, 0), (1, 0), (0, 1), (1, 1)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_fine(simulator, cal):
+def test_prenc_fine(simulator, cal, quarter):
     parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
-                  "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS, "CAL": cal}
+                  "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS, "CAL": cal,
+                  "QUARTER_WINDOWS": quarter}
     env = {}
     if cal:
         parameters["CAL_FILE"] = env["PRENC_CAL_FILE"] = cal_file()
