@@ -221,7 +221,7 @@ class Velocity:
         velocity = self.velocity
         # A step reads these as the cycle began (a hold or a stop in the same cycle does
         # not count for it): in the RTL they do not wait for the zero-crossing test.
-        held0, decaying0, accel0 = self.held, self.decaying, self.accel
+        held0, decaying0, accel0, step_speed0 = self.held, self.decaying, self.accel, self.step_speed
         mul_done = self.mul_left == 0
 
         # Between events: the velocity integrates accel (but while held at 0); the timers run.
@@ -354,7 +354,7 @@ class Velocity:
             if reversal:
                 # The same edge crossed back at the speed it was crossed at; accel and the
                 # sign memory go on (the speed's trend turns: it grows again).
-                speed = self.step_speed
+                speed = step_speed0
                 v_n = speed if step_cw else -speed
                 self.have_prev = 0
                 self.last_negative ^= 1
