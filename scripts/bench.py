@@ -443,6 +443,9 @@ def fine_section() -> bool:
                 line += zero
             print(line)
     print(f"   ({time.perf_counter() - t0:.0f} s)")
+    print("\n   Logic (Yosys, prenc_fine at N = 10, FINE_BITS = 8, before placement):")
+    for line in fine_logic_rows():
+        print(f"   {line}")
 
     def verdict(ok: bool, counts: bool = True) -> str:
         nonlocal failed
@@ -474,6 +477,27 @@ def fine_section() -> bool:
         print(f"   never more than a quarter slot (plus the extrapolation) from the truth: worst {worst:.4f} slot: "
               f"{verdict(worst <= 0.25 + 0.01, counts)}")
     return failed
+
+
+def fine_logic_rows() -> list[str]:
+    """What the quarter windows cost: prenc_fine with QUARTER_WINDOWS 0 and 1 (Yosys,
+    iCE40 and ECP5 cells)."""
+    sys.path.insert(0, str(REPO / "tb"))
+    from yosys import synthesize
+
+    rows = []
+    for family, lut, ff in (("ice40", "SB_LUT4", "SB_DFF"), ("ecp5", "LUT4", "TRELLIS_FF")):
+        cells = []
+        for quarter in (0, 1):
+            try:
+                c = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, "QUARTER_WINDOWS": quarter}).cells
+            except RuntimeError as err:
+                cells.append(f"QUARTER_WINDOWS = {quarter}: not built ({err})")
+                continue
+            flops = sum(n for k, n in c.items() if k.startswith(ff))
+            cells.append(f"QUARTER_WINDOWS = {quarter}: {c.get(lut, 0)} LUT4, {flops} FF")
+        rows.append(f"{family}: " + "; ".join(cells))
+    return rows
 
 
 def cal_section() -> bool:
