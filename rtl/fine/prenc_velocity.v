@@ -97,7 +97,8 @@ module prenc_velocity #(
       prenc_velocity_parameter_CAL_must_be_0_or_1 u_stop ();
     end
     if (QUARTER_WINDOWS != 0 && QUARTER_WINDOWS != 1) begin : g_bad_quarter_windows
-      initial $display("ERROR: %m: parameter QUARTER_WINDOWS = %0d must be 0 or 1", QUARTER_WINDOWS);
+      initial $display("ERROR: %m: parameter QUARTER_WINDOWS = %0d must be 0 or 1",
+                       QUARTER_WINDOWS);
       prenc_velocity_parameter_QUARTER_WINDOWS_must_be_0_or_1 u_stop ();
     end
   endgenerate
@@ -422,18 +423,20 @@ module prenc_velocity #(
         last_negative_n = diff_reg[XB-1];
         last_fit_n = !constant;
         div_start = 1'b1;
-        if (constant || (!same && QUARTER_WINDOWS == 0)) begin
-          div_num = {{(NB - MCB - 1 - FRAC + CALB){1'b0}}, n_run, {(FRAC - CALB){1'b0}}};
-          div_den = p_sum_reg;
+        if (constant || !same) begin
           state_n = S_CONSTANT;
-          if (constant && QUARTER_WINDOWS == 1 && run_fits) begin
+          if (QUARTER_WINDOWS == 1 && !constant) begin
+            // Quarter windows, one failure: the window's own mean (the run is stale).
+            div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n1_reg, {(FRAC - CALB){1'b0}}};
+            div_den = {1'b0, p1_reg};
+          end else begin
+            div_num = {{(NB - MCB - 1 - FRAC + CALB){1'b0}}, n_run, {(FRAC - CALB){1'b0}}};
+            div_den = p_sum_reg;
+          end
+          if (QUARTER_WINDOWS == 1 && constant && run_fits) begin
             prev_n_n = n_run[MCB-1:0];
             prev_clocks_n = p_sum_reg[TB-1:0];
           end
-        end else if (!same) begin  // quarter windows, one failure: the window's own mean
-          div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n1_reg, {(FRAC - CALB){1'b0}}};
-          div_den = {1'b0, p1_reg};
-          state_n = S_CONSTANT;
         end else begin
           div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n1_reg, {(FRAC - CALB){1'b0}}};
           div_den = {1'b0, p1_reg};
