@@ -531,8 +531,10 @@ def cal_section() -> bool:
     print(f"      against the true edges: {err[0]:.5f} slot RMS, {err[1]:.5f} max; its zero is "
           f"{zero:+.5f} slot from the shaft's (taken off the calibrated errors below)")
     print("\n   c. Applied: position error in slots (RMS / max), velocity error in % (RMS / max)")
+    print("      (calibrated: the default full-cycle windows; quarter: QUARTER_WINDOWS = 1, WINDOW "
+          f"{fb.QUARTER_WINDOW}, with the table)")
     print(f"   {'scenario':<34} {'coarse':>15} {'uncalibrated pos':>17} {'uncalibrated vel %':>19} "
-          f"{'calibrated pos':>17} {'calibrated vel %':>17}")
+          f"{'calibrated pos':>17} {'calibrated vel %':>17} {'quarter pos':>17} {'quarter vel %':>17}")
     rows = {}
     for case in fb.cases():
         r = cb.evaluate(case, result.table.c, zero)
@@ -541,7 +543,9 @@ def cal_section() -> bool:
               f"{r['uncalibrated'].fine[0]:>9.5f}/{r['uncalibrated'].fine[1]:.4f} "
               f"{r['uncalibrated'].velocity[0]:>10.4f}/{r['uncalibrated'].velocity[1]:.3f} "
               f"{r['calibrated'].fine[0]:>9.5f}/{r['calibrated'].fine[1]:.4f} "
-              f"{r['calibrated'].velocity[0]:>9.4f}/{r['calibrated'].velocity[1]:.3f}")
+              f"{r['calibrated'].velocity[0]:>9.4f}/{r['calibrated'].velocity[1]:.3f} "
+              f"{r['calibrated quarter'].fine[0]:>9.5f}/{r['calibrated quarter'].fine[1]:.4f} "
+              f"{r['calibrated quarter'].velocity[0]:>9.4f}/{r['calibrated quarter'].velocity[1]:.3f}")
     print(f"   ({time.perf_counter() - t0:.0f} s)")
 
     def verdict(ok: bool) -> str:

@@ -64,11 +64,13 @@ def bench_table(c_true: np.ndarray) -> Result:
     return calibrate(record, CAL_TURNS)
 
 
-def run_calibrated(sync: fb.Sync, c: np.ndarray) -> dict[str, np.ndarray]:
+def run_calibrated(sync: fb.Sync, c: np.ndarray, quarter_windows: int = 0) -> dict[str, np.ndarray]:
     """fine_bench.run_fine through prenc_fine with CAL = 1 and the table c (in
-    2^-12 quarters): the model of the RTL, clock by clock."""
+    2^-12 quarters): the model of the RTL, clock by clock; with quarter_windows = 1,
+    QUARTER_WINDOWS = 1 and fine_bench's QUARTER_WINDOW."""
     fine = Fine(n=N, fine_bits=fb.FINE_BITS, lookahead_halves=fb.LOOKAHEAD_HALVES,
-                window=fb.WINDOW, cal=1, table=c)
+                window=fb.QUARTER_WINDOW if quarter_windows else fb.WINDOW, cal=1, table=c,
+                quarter_windows=quarter_windows)
     total = len(sync.step)
     v_out = np.zeros(total)
     fine_pos = np.zeros(total, dtype=np.int64)
@@ -82,12 +84,15 @@ def run_calibrated(sync: fb.Sync, c: np.ndarray) -> dict[str, np.ndarray]:
 
 
 def evaluate(case: fb.Case, table_c: np.ndarray, zero: float) -> dict[str, fb.Row]:
-    """Ours without and with the table on the printed disc; `zero` (slots) is the
-    calibration's zero against the truth, taken off the calibrated position's error."""
+    """Ours without and with the table on the printed disc (with the table in both
+    configurations: full-cycle and quarter windows); `zero` (slots) is the calibration's
+    zero against the truth, taken off the calibrated position's error."""
     sync = fb.sync_stream(case.theta, fb.PRINTED)
     scale = 1 << fb.FINE_BITS
     plain = fb.run_fine(sync)
     cal = run_calibrated(sync, table_c)
+    quarter = run_calibrated(sync, table_c, quarter_windows=1)
     return {"coarse": fb.score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "uncalibrated": fb.score(case, sync, plain["fine"] / scale, plain["velocity"]),
-            "calibrated": fb.score(case, sync, cal["fine"] / scale - 4 * zero, cal["velocity"])}
+            "calibrated": fb.score(case, sync, cal["fine"] / scale - 4 * zero, cal["velocity"]),
+            "calibrated quarter": fb.score(case, sync, quarter["fine"] / scale - 4 * zero, quarter["velocity"])}
