@@ -292,7 +292,8 @@ module prenc_velocity #(
   wire [XB-1:0]        above_low_16  = diff_reg + n_less_16;
   wire [XB-1:0]        below_high_16 = n_less_16 - diff_reg;
   wire                 big = (QUARTER_WINDOWS == 1) && (above_low_16[XB-1] || below_high_16[XB-1]);
-  wire                 same = big || ((diff_reg[XB-1] == last_negative_reg) && last_fit_reg);
+  // An acceleration that lasts: failed twice with the same sign, or by 16 times the bound.
+  wire                 lasting = big || ((diff_reg[XB-1] == last_negative_reg) && last_fit_reg);
   // Quarter windows: a window that passes joins the run, while it stays below
   // 2^(MCB-1) quarters and 2^(TB-1) clocks.
   wire [MCB:0]         n_run = n_less_reg + 1'b1;
@@ -423,7 +424,7 @@ module prenc_velocity #(
         last_negative_n = diff_reg[XB-1];
         last_fit_n = !constant;
         div_start = 1'b1;
-        if (constant || !same) begin
+        if (constant || !lasting) begin
           state_n = S_CONSTANT;
           if (QUARTER_WINDOWS == 1 && !constant) begin
             // Quarter windows, one failure: the window's own mean (the run is stale).

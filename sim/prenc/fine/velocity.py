@@ -32,8 +32,8 @@ The estimator, on the quadrature decoder's registered step:
   without one, the A/B phase and duty errors enter every window):
   - a window closes on a step over any edge, at least WINDOW clocks after A;
   - the run: what is before the closing window is the run of windows that passed
-    the constant-speed test together (at most 2^(bits - 1) quarters and
-    2^(TIMER_BITS - 1) clocks; the last window alone after any other update). A
+    the constant-speed test together (less than 2^15 quarters and 2^(TIMER_BITS - 1)
+    clocks; the last window alone after any other update). A
     window that passes joins it, and the velocity is the mean over the whole run,
     whose quantization shrinks as it grows;
   - a test failed by BIG (16) times its bound or more is an acceleration at once:
@@ -259,23 +259,23 @@ class Velocity:
         elif state == self.DECIDE:
             diff = self.diff
             constant = -(self.n1 + self.n2) < diff < self.n1 + self.n2
-            # With quarter windows, a failure by 16 times the quantization or more is an
-            # acceleration at once.
+            # An acceleration that lasts: the test failed twice with the same sign, or
+            # (quarter windows) by BIG times its bound or more.
             big = self.quarter_windows and not -BIG * (self.n1 + self.n2) < diff < BIG * (self.n1 + self.n2)
-            same = big or (int(diff < 0) == self.last_negative and self.last_fit)
+            lasting = big or (int(diff < 0) == self.last_negative and self.last_fit)
             self.last_negative, self.last_fit = int(diff < 0), int(not constant)
-            if constant or (not same and not self.quarter_windows):
-                start, num, den = 1, (self.n1 + self.n2) << (FRAC - self.cal_bits), self.p1 + self.p2
+            if constant or not lasting:
                 self.state = self.CONSTANT
-                # The window joins the run (the close made it the run alone), unless
-                # the run would grow too long.
-                if constant and self.quarter_windows and self.n1 + self.n2 < (1 << (self.mul_bits - 1)) \
+                if self.quarter_windows and not constant:
+                    # Quarter windows, one failed test: the run is stale; the window's own mean.
+                    start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
+                else:
+                    start, num, den = 1, (self.n1 + self.n2) << (FRAC - self.cal_bits), self.p1 + self.p2
+                # Quarter windows: the window joins the run (the close made it the run
+                # alone), unless the run would grow too long.
+                if self.quarter_windows and constant and self.n1 + self.n2 < (1 << (self.mul_bits - 1)) \
                         and self.p1 + self.p2 < (1 << (self.timer_bits - 1)):
                     self.prev_n, self.prev_clocks = self.n1 + self.n2, self.p1 + self.p2
-            elif not same:
-                # Quarter windows, one failed test: the run is stale; the window's own mean.
-                start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
-                self.state = self.CONSTANT
             else:
                 start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
                 self.state = self.FIT_V01
