@@ -479,6 +479,18 @@ def fine_section() -> bool:
     return failed
 
 
+def cell_counts(result, family: str) -> str:
+    """A Yosys result's LUTs, flip-flops and block RAMs (iCE40 or ECP5)."""
+    c = result.cells
+    if family == "ice40":
+        lut, ram = c.get("SB_LUT4", 0), c.get("SB_RAM40_4K", 0)
+        ff = sum(n for k, n in c.items() if k.startswith("SB_DFF"))
+        return f"{lut} LUT4, {ff} FF, {ram} SB_RAM40_4K"
+    lut, ram = c.get("LUT4", 0), c.get("DP16KD", 0)
+    ff = sum(n for k, n in c.items() if k.startswith("TRELLIS_FF"))
+    return f"{lut} LUT4, {ff} FF, {ram} DP16KD"
+
+
 def fine_logic_rows() -> list[str]:
     """What the quarter windows cost: prenc_fine with QUARTER_WINDOWS 0 and 1 (Yosys,
     iCE40 and ECP5 cells)."""
@@ -486,16 +498,14 @@ def fine_logic_rows() -> list[str]:
     from yosys import synthesize
 
     rows = []
-    for family, lut, ff in (("ice40", "SB_LUT4", "SB_DFF"), ("ecp5", "LUT4", "TRELLIS_FF")):
+    for family in ("ice40", "ecp5"):
         cells = []
         for quarter in (0, 1):
             try:
-                c = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, "QUARTER_WINDOWS": quarter}).cells
+                result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, "QUARTER_WINDOWS": quarter})
+                cells.append(f"QUARTER_WINDOWS = {quarter}: {cell_counts(result, family)}")
             except RuntimeError as err:
-                cells.append(f"QUARTER_WINDOWS = {quarter}: not built ({err})")
-                continue
-            flops = sum(n for k, n in c.items() if k.startswith(ff))
-            cells.append(f"QUARTER_WINDOWS = {quarter}: {c.get(lut, 0)} LUT4, {flops} FF")
+                cells.append(f"QUARTER_WINDOWS = {quarter}: FAILED: {str(err).splitlines()[0]}")
         rows.append(f"{family}: " + "; ".join(cells))
     return rows
 
@@ -582,16 +592,7 @@ def cal_logic_rows(c_true) -> list[str]:
 
     table = Table.from_quarters(10, c_true - c_true.mean()).write(SIM_BUILD / "bench" / "cal_n10.hex")
     rows = []
-
-    def cells(result, family) -> str:
-        c = result.cells
-        if family == "ice40":
-            lut, ram = c.get("SB_LUT4", 0), c.get("SB_RAM40_4K", 0)
-            ff = sum(n for k, n in c.items() if k.startswith("SB_DFF"))
-            return f"{lut} LUT4, {ff} FF, {ram} SB_RAM40_4K"
-        lut, ram = c.get("LUT4", 0), c.get("DP16KD", 0)
-        ff = sum(n for k, n in c.items() if k.startswith("TRELLIS_FF"))
-        return f"{lut} LUT4, {ff} FF, {ram} DP16KD"
+    cells = cell_counts
     for family in ("ice40", "ecp5"):
         base = {"N": 10, "FINE_BITS": 8}
         try:

@@ -66,10 +66,9 @@ def bench_table(c_true: np.ndarray) -> Result:
 
 def run_calibrated(sync: fb.Sync, c: np.ndarray, quarter_windows: int = 0) -> dict[str, np.ndarray]:
     """fine_bench.run_fine through prenc_fine with CAL = 1 and the table c (in
-    2^-12 quarters): the model of the RTL, clock by clock; with quarter_windows = 1,
-    QUARTER_WINDOWS = 1 and fine_bench's QUARTER_WINDOW."""
+    2^-12 quarters): the model of the RTL, clock by clock, in either configuration."""
     fine = Fine(n=N, fine_bits=fb.FINE_BITS, lookahead_halves=fb.LOOKAHEAD_HALVES,
-                window=fb.QUARTER_WINDOW if quarter_windows else fb.WINDOW, cal=1, table=c,
+                window=fb.default_window(quarter_windows), cal=1, table=c,
                 quarter_windows=quarter_windows)
     total = len(sync.step)
     v_out = np.zeros(total)

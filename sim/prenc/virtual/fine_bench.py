@@ -101,11 +101,17 @@ def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N) -> Syn
     return Sync(step, cw, pos % (4 << n))
 
 
-def run_fine(sync: Sync, window: int = WINDOW, fine_bits: int = FINE_BITS,
+def default_window(quarter_windows: int) -> int:
+    """The bench's shortest window for a configuration: WINDOW, or QUARTER_WINDOW."""
+    return QUARTER_WINDOW if quarter_windows else WINDOW
+
+
+def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
              lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N,
              quarter_windows: int = 0) -> dict[str, np.ndarray]:
-    """The models of prenc_velocity and prenc_fine_position, clock by clock."""
-    vel = Velocity(window=window, quarter_windows=quarter_windows)
+    """The models of prenc_velocity and prenc_fine_position, clock by clock (window:
+    default_window(quarter_windows) unless given)."""
+    vel = Velocity(window=window or default_window(quarter_windows), quarter_windows=quarter_windows)
     fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
     total = len(sync.step)
     v_out = np.zeros(total)
@@ -301,7 +307,7 @@ def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
     case."""
     sync = sync_stream(case.theta, printing)
     ours = run_fine(sync)
-    quarter = run_fine(sync, window=QUARTER_WINDOW, quarter_windows=1)
+    quarter = run_fine(sync, quarter_windows=1)
     scale = 1 << FINE_BITS
     rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "ours": score(case, sync, ours["fine"] / scale, ours["velocity"]),

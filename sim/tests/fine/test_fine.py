@@ -53,8 +53,7 @@ def test_steady_speed_meets_the_goals_on_an_ideal_disc(rpm, quarter_windows):
     # Goals of issue 37: fine position <= 1/256 slot RMS, velocity within 0.05 %.
     theta = steady(rpm, slots=max(12.0, 30 * fb.rpm(rpm) * fb.WINDOW / fb.CLK_HZ))
     sync = fb.sync_stream(theta, None)
-    out = fb.run_fine(sync, window=fb.QUARTER_WINDOW if quarter_windows else fb.WINDOW,
-                      quarter_windows=quarter_windows)
+    out = fb.run_fine(sync, quarter_windows=quarter_windows)
     c = np.arange(len(theta) // 2, len(theta) - 1)
     err = fb.position_error(out["fine"][c] / (1 << fb.FINE_BITS), theta[c + 1])
     truth = 4 * fb.rpm(rpm) / fb.CLK_HZ
@@ -92,8 +91,7 @@ def test_quarter_windows_follow_a_ramp_from_its_first_quarters():
     truth = 4 * (theta[c + 1] - theta[c])
     rms = {}
     for quarter_windows in (0, 1):
-        out = fb.run_fine(sync, window=fb.QUARTER_WINDOW if quarter_windows else fb.WINDOW,
-                          quarter_windows=quarter_windows)
+        out = fb.run_fine(sync, quarter_windows=quarter_windows)
         v_err = (out["velocity"][c] - truth) / truth
         rms[quarter_windows] = np.sqrt(np.mean(v_err ** 2))
         if quarter_windows:
