@@ -142,7 +142,8 @@ module prenc_fine_position #(
                                             <<< (FRAC - 12));
   wire signed [LB:0]   edge_travel = (cw_reg ? lo_edge : hi_edge) +
                                      {travel_reg[LB-1], travel_reg};
-  wire signed [LB:0]   middle_a    = (lo_edge + hi_edge) >>> 1;
+  wire signed [LB+1:0] edge_sum    = {lo_edge[LB], lo_edge} + {hi_edge[LB], hi_edge};
+  wire signed [LB:0]   middle_a    = edge_sum[LB+1:1];   // (-8, 9) quarters: it fits
   reg signed [LB:0]    clamped;
   generate
     if (CAL == 1) begin : g_cal_clamp
@@ -184,7 +185,7 @@ module prenc_fine_position #(
                                      ((travel_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
                                       (travel_sum[FRAC:0] != {(FRAC + 1){1'b0}}));
   // The quarters above pos_hyb's wrap.
-  wire                 unused_ok   = &{1'b0, truncated[XB-1:W], mid_trunc[LB:W]};
+  wire                 unused_ok   = &{1'b0, truncated[XB-1:W], mid_trunc[LB:W], edge_sum[0]};
 
   always @(posedge clk) begin
     // Stage C.
@@ -247,6 +248,69 @@ module prenc_fine_position #(
       tree3_reg        <= {XB{1'b0}};
     end
   end
+
+`ifdef FORMAL
+  // Properties (formal/prenc_fine_position.sby), for any velocity, steps and
+  // corrections: the promise of docs/fine.md. The output is pos_hyb, pos_valid and
+  // velocity_valid of OUTPUT_DELAY = 3 clocks before; without a valid velocity the
+  // fraction is the quarter's middle; with one, the fine position lies in pos_hyb's
+  // quarter, [c_lo, 1 + c_hi) of it with CAL = 1, widened by the extrapolation,
+  // floor(velocity * LOOKAHEAD_HALVES / 2), with the velocity of 5 clocks before.
+  reg [N+1:0]         f_pos_d1, f_pos_d2, f_pos_d3;
+  reg [1:0]           f_valid_d1, f_valid_d2, f_valid_d3;  // {velocity_valid, pos_valid}
+  reg signed [15:0]   f_lo_d1, f_lo_d2, f_lo_d3;
+  reg signed [15:0]   f_hi_d1, f_hi_d2, f_hi_d3;
+  reg signed [50:0]   f_v_d1 = 51'd0, f_v_d2 = 51'd0, f_v_d3 = 51'd0, f_v_d4 = 51'd0,
+                      f_v_d5 = 51'd0;   // 0 before the first clocks, as the tree after reset
+  reg [2:0]           f_since_rst = 3'd0;
+  always @(posedge clk) begin
+    {f_pos_d3, f_pos_d2, f_pos_d1}       <= {f_pos_d2, f_pos_d1, pos_hyb};
+    {f_valid_d3, f_valid_d2, f_valid_d1} <= {f_valid_d2, f_valid_d1, velocity_valid, pos_valid};
+    {f_lo_d3, f_lo_d2, f_lo_d1}          <= {f_lo_d2, f_lo_d1, c_lo_used};
+    {f_hi_d3, f_hi_d2, f_hi_d1}          <= {f_hi_d2, f_hi_d1, c_hi_used};
+    {f_v_d5, f_v_d4, f_v_d3, f_v_d2, f_v_d1} <= {f_v_d4, f_v_d3, f_v_d2, f_v_d1, velocity};
+    f_since_rst <= rst ? 3'd0 : (f_since_rst == 3'd7) ? 3'd7 : f_since_rst + 1'b1;
+  end
+  initial assume (rst);
+  // The quarter has a width (the calibration table's corrections leave it one); the
+  // velocity is below 1/16 quarter a clock (10,000 rpm at N = 10 and 30 MHz: 1/44), so
+  // that the bound below does not wrap modulo 2^W.
+  always @(*) begin
+    assume ($signed(c_hi_used) + 17'sd4096 > $signed(c_lo_used));
+    assume ($signed(velocity) < (51'sd1 <<< (FRAC - 4)) &&
+            $signed(velocity) > -(51'sd1 <<< (FRAC - 4)));
+  end
+  localparam integer F_SHIFT = FRAC - F;
+  localparam integer F_CS    = 12 - F;   // the corrections' 2^-12 in fraction units
+  wire [W-1:0]         f_diff  = fine_pos_reg - {f_pos_d3, {F{1'b0}}};
+  wire signed [W:0]    f_error = {f_diff[W-1], f_diff};   // in 2^-F quarters
+  wire signed [XB-1:0] f_ext   = ($signed({{(XB - 51){f_v_d5[50]}}, f_v_d5}) *
+                                  $signed({1'b0, LOOKAHEAD})) >>> 1;
+  wire signed [XB-1:0] f_ext_q = f_ext >>> F_SHIFT;   // floor, in 2^-F quarters
+  wire signed [16:0]   f_lo_q  = $signed({f_lo_d3[15], f_lo_d3}) >>> F_CS;   // floor
+  wire signed [16:0]   f_hi_q  = ($signed({f_hi_d3[15], f_hi_d3}) + (17'sd1 <<< F_CS) - 17'sd1)
+                                 >>> F_CS;                                     // ceil
+  // [floor(c_lo), 1 + ceil(c_hi)) with the extrapolation, in 2^-F quarters.
+  wire signed [W:0]    f_lo    = ((CAL == 1) ? f_lo_q[W:0] : 0) +
+                                 ((f_ext_q < 0) ? f_ext_q[W:0] : 0);
+  wire signed [W:0]    f_hi    = (1 << F) - 1 + ((CAL == 1) ? f_hi_q[W:0] : 0) +
+                                 ((f_ext > 0) ? f_ext_q[W:0] + 1 : 0);
+  always @(*) begin
+    if (f_since_rst >= 3'd3) begin
+      assert (valid_reg == f_valid_d3[0]);
+      assert (interpolated_reg == (f_valid_d3[0] && f_valid_d3[1]));
+      if (!f_valid_d3[1] && CAL == 0) assert (fine_pos_reg == {f_pos_d3, {F{1'b0}}} + MIDDLE);
+      assert (f_error >= f_lo && f_error <= f_hi);
+      if (CAL == 0 && LOOKAHEAD_HALVES == 0) assert (fine_pos_reg[W-1:F] == f_pos_d3);
+    end
+  end
+  always @(posedge clk) begin
+    if (f_since_rst >= 3'd3) begin
+      cover (interpolated_reg && fine_pos_reg[W-1:F] != f_pos_d3);
+      cover (interpolated_reg && fine_pos_reg[F-1:0] == {F{1'b1}});
+    end
+  end
+`endif
 
   assign fine_pos     = fine_pos_reg;
   assign fine_valid   = valid_reg;
