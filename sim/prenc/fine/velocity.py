@@ -220,8 +220,10 @@ class Velocity:
         idle = self.state == self.IDLE
         velocity = self.velocity
         # A step reads these as the cycle began (a hold or a stop in the same cycle does
-        # not count for it): in the RTL they do not wait for the zero-crossing test.
+        # not count for it, nor a decision that a reversal cancels): in the RTL they do
+        # not wait for the zero-crossing test or the sequencer.
         held0, decaying0, accel0, step_speed0 = self.held, self.decaying, self.accel, self.step_speed
+        last_negative0 = self.last_negative
         mul_done = self.mul_left == 0
 
         # Between events: the velocity integrates accel (but while held at 0); the timers run.
@@ -357,7 +359,7 @@ class Velocity:
                 speed = step_speed0
                 v_n = speed if step_cw else -speed
                 self.have_prev = 0
-                self.last_negative ^= 1
+                self.last_negative = last_negative0 ^ 1
                 self.have_a, self.x_a, self.c_a, since_a_n = 1, x, step_c, 1
                 cancel, start, self.state = 1, 0, self.IDLE
             elif not self.have_a or self.since_a == self.timer_max:
