@@ -96,7 +96,7 @@ module prenc_icebreaker #(
     .ROM_FILE (ROM_FILE),
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
-    .FINE     (0)  // the UP5K's 5,280 cells hold the board (3,138 LC), not with prenc_fine (6,240 LUT4)
+    .FINE     (0)  // the UP5K's 5,280 cells: the board 3,138 LC, with prenc_fine 6,240 LUT4
   ) u_board (
     .clk             (clk),
     .rst             (rst),
