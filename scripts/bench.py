@@ -592,15 +592,14 @@ def cal_logic_rows(c_true) -> list[str]:
 
     table = Table.from_quarters(10, c_true - c_true.mean()).write(SIM_BUILD / "bench" / "cal_n10.hex")
     rows = []
-    cells = cell_counts
     for family in ("ice40", "ecp5"):
         base = {"N": 10, "FINE_BITS": 8}
         try:
             without = synthesize("prenc_fine", family, base)
             with_cal = synthesize("prenc_fine", family, base | {"CAL": 1, "CAL_FILE": table})
             capture = synthesize("prenc_edge_capture", family, {"N": 10})
-            rows.append(f"{family}: prenc_fine {cells(without, family)}; with CAL = 1 {cells(with_cal, family)}; "
-                        f"prenc_edge_capture {cells(capture, family)}")
+            rows.append(f"{family}: prenc_fine {cell_counts(without, family)}; with CAL = 1 "
+                        f"{cell_counts(with_cal, family)}; prenc_edge_capture {cell_counts(capture, family)}")
         except RuntimeError as err:
             rows.append(f"{family}: FAILED: {str(err).splitlines()[0]}")
     for cal in (None, str(table)):
