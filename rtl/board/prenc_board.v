@@ -48,6 +48,9 @@
 //                 sync track, for an accurate or calibrated disc (with VELOCITY_WINDOW
 //                 640 at 30 MHz: follows acceleration within a quarter or two); 0: full sync
 //                 cycles, whose A/B phase and duty errors cancel (default, printed discs)
+//   ACCEL_FIT     prenc_velocity's: 1, an acceleration fitted when windows disagree
+//                 (default); 0: the mean of the last two windows, no multiplier (about
+//                 half its logic, for a small FPGA; needs QUARTER_WINDOWS = 0)
 //   CAL           1: the fine position and the velocity use the sync track's calibration
 //                 table (docs/calibration.md; needs FINE = 1), written over the host
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
@@ -90,6 +93,7 @@ module prenc_board #(
   parameter integer EXTRAPOLATE     = 1,
   parameter integer VELOCITY_WINDOW = 2048,
   parameter integer QUARTER_WINDOWS = 0,
+  parameter integer ACCEL_FIT       = 1,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
@@ -258,6 +262,7 @@ module prenc_board #(
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (VELOCITY_WINDOW),
     .QUARTER_WINDOWS  (QUARTER_WINDOWS),
+    .ACCEL_FIT        (ACCEL_FIT),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)

@@ -48,7 +48,7 @@
 // as the map), checked there; N <= 24 fits the map's fields. FINE (1: prenc_fine is
 // built; 0: not, FINE_POS reads POS_HYB and VELOCITY 0), FINE_BITS (0..8, default 8;
 // N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048),
-// QUARTER_WINDOWS (0; prenc_board's header and docs/fine.md),
+// QUARTER_WINDOWS (0), ACCEL_FIT (1; both in prenc_board's header and docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
 // CAL_FILE (the table it starts with; "" : all zero).
 
@@ -75,6 +75,7 @@ module prenc_wb #(
   parameter integer EXTRAPOLATE     = 1,
   parameter integer VELOCITY_WINDOW = 2048,
   parameter integer QUARTER_WINDOWS = 0,
+  parameter integer ACCEL_FIT       = 1,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = ""
 ) (
@@ -252,6 +253,7 @@ module prenc_wb #(
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (VELOCITY_WINDOW),
     .QUARTER_WINDOWS  (QUARTER_WINDOWS),
+    .ACCEL_FIT        (ACCEL_FIT),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)

@@ -28,7 +28,7 @@
 //
 // Parameters
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
-//   WINDOW, TIMER_BITS, QUARTER_WINDOWS   prenc_velocity's (2048, 26, 0)
+//   WINDOW, TIMER_BITS, QUARTER_WINDOWS, ACCEL_FIT   prenc_velocity's (2048, 26, 0, 1)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
@@ -51,6 +51,7 @@ module prenc_fine #(
   parameter integer WINDOW           = 2048,
   parameter integer TIMER_BITS       = 26,
   parameter integer QUARTER_WINDOWS  = 0,
+  parameter integer ACCEL_FIT        = 1,
   parameter integer ENABLE           = 1,
   parameter integer CAL              = 0,
   parameter         CAL_FILE         = ""
@@ -210,7 +211,8 @@ module prenc_fine #(
         .WINDOW     (WINDOW),
         .TIMER_BITS (TIMER_BITS),
         .CAL        (CAL),
-        .QUARTER_WINDOWS (QUARTER_WINDOWS)
+        .QUARTER_WINDOWS (QUARTER_WINDOWS),
+        .ACCEL_FIT  (ACCEL_FIT)
       ) u_velocity (
         .clk      (clk),
         .rst      (rst),

@@ -18,6 +18,9 @@
 //   which stands for the window before (the velocity is the mean over the whole run);
 //   a test failed by 16 times its bound fits at once, and a smaller first failure
 //   shows the window's own mean n1/P1.
+// - ACCEL_FIT = 0 (a small FPGA): no test and no fit; every close after another window
+//   loads the mean over both, accel 0 (no multiplier: about half the logic; the
+//   velocity lags an acceleration by about a window).
 // - Before a window closes (after reset, a stop, an illegal transition): the mean
 //   velocity since the window's first step.
 // - A reversal restarts the windows; the velocity takes the new sign at once, with the
@@ -43,8 +46,8 @@
 // Model: prenc.fine.velocity.Velocity, which this equals clock for clock.
 //
 // Latency: an update loads velocity and accel FULL_CLOCKS after the step that closed
-// the window (the serial divider and multiplier); between updates they move every
-// clock.
+// the window (the serial divider and multiplier), with ACCEL_FIT = 0 a constant-speed
+// update DIV_CLOCKS + 2; between updates they move every clock.
 //
 // Parameters
 //   WINDOW       shortest window in clocks, 16..2^(TIMER_BITS-1)-1 (2048: 68 us at 30 MHz)
@@ -52,6 +55,8 @@
 //   CAL          1: window lengths from the calibration table's corrections; 0: nominal
 //   QUARTER_WINDOWS  1: windows between any edges, runs, fits at one large failure
 //                (for an accurate or calibrated disc); 0: full-cycle windows (printed)
+//   ACCEL_FIT    1: an acceleration fitted when windows disagree (default); 0: the mean
+//                of the last two windows, no multiplier (needs QUARTER_WINDOWS = 0)
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs (prenc_core's
@@ -68,7 +73,8 @@ module prenc_velocity #(
   parameter integer WINDOW     = 2048,
   parameter integer TIMER_BITS = 26,
   parameter integer CAL        = 0,
-  parameter integer QUARTER_WINDOWS = 0
+  parameter integer QUARTER_WINDOWS = 0,
+  parameter integer ACCEL_FIT  = 1
 ) (
   input  wire        clk,
   input  wire        rst,
@@ -101,6 +107,15 @@ module prenc_velocity #(
                        QUARTER_WINDOWS);
       prenc_velocity_parameter_QUARTER_WINDOWS_must_be_0_or_1 u_stop ();
     end
+    if (ACCEL_FIT != 0 && ACCEL_FIT != 1) begin : g_bad_accel_fit
+      initial $display("ERROR: %m: parameter ACCEL_FIT = %0d must be 0 or 1", ACCEL_FIT);
+      prenc_velocity_parameter_ACCEL_FIT_must_be_0_or_1 u_stop ();
+    end
+    if (ACCEL_FIT == 0 && QUARTER_WINDOWS != 0) begin : g_bad_fit_windows
+      initial $display("ERROR: %m: parameter ACCEL_FIT = 0 needs QUARTER_WINDOWS = 0 %s",
+                       "(runs need the constant-speed test)");
+      prenc_velocity_parameter_ACCEL_FIT_0_needs_QUARTER_WINDOWS_0 u_stop ();
+    end
   endgenerate
 
   localparam integer FRAC  = 48;
@@ -122,7 +137,8 @@ module prenc_velocity #(
 
   localparam [3:0] S_IDLE = 4'd0, S_MEAN = 4'd1, S_CROSS1 = 4'd2, S_CROSS2 = 4'd3, S_DECIDE = 4'd4,
                    S_CONSTANT = 4'd5, S_FIT_V01 = 4'd6, S_FIT_V12 = 4'd7, S_FIT_D = 4'd8,
-                   S_FIT_A = 4'd9, S_FIT_MUL = 4'd10, S_FIT_LOAD = 4'd11, S_DECAY = 4'd12;
+                   S_FIT_A = 4'd9, S_FIT_MUL = 4'd10, S_FIT_LOAD = 4'd11, S_DECAY = 4'd12,
+                   S_SUMS = 4'd13;
 
   localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
   localparam signed [LB-1:0] OVERDUE    = {{(LB - FRAC - 1){1'b0}}, 2'b11, {(FRAC - 1){1'b0}}};
@@ -286,7 +302,8 @@ module prenc_velocity #(
   wire [XB-1:0]        n_less_wide = {{(XB - MCB - 1){1'b0}}, n_less_reg};
   wire [XB-1:0]        above_low  = diff_reg + n_less_wide;
   wire [XB-1:0]        below_high = n_less_wide - diff_reg;
-  wire                 constant = !above_low[XB-1] && !below_high[XB-1];
+  // (ACCEL_FIT = 0: the test always passes, and the multiplier is never started.)
+  wire                 constant = (ACCEL_FIT == 0) || (!above_low[XB-1] && !below_high[XB-1]);
   // Quarter windows: |diff| < 16 (n1 + n2) likewise (16 n_less + 15), else a fit at once.
   wire [XB-1:0]        n_less_16 = {n_less_wide[XB-5:0], 4'b1111};
   wire [XB-1:0]        above_low_16  = diff_reg + n_less_16;
@@ -391,8 +408,8 @@ module prenc_velocity #(
     if (since_a_reg != TIMER_MAX) since_a_n = since_a_reg + 1'b1;
 
     // The serial multiplier: a bit of the multiplier a cycle, MSB first.
-    if ((state_reg == S_CROSS1 || state_reg == S_CROSS2 || state_reg == S_FIT_MUL) &&
-        !mul_done) begin
+    if (ACCEL_FIT == 1 && (state_reg == S_CROSS1 || state_reg == S_CROSS2 ||
+                           state_reg == S_FIT_MUL) && !mul_done) begin
       product_n = product_step;
       mul_left_n = mul_left_reg - 1'b1;
       multiplier_n = multiplier_reg << 1;
@@ -406,7 +423,7 @@ module prenc_velocity #(
         valid_n = 1'b1;
         state_n = S_IDLE;
       end
-      S_CROSS1: if (mul_done) begin
+      S_CROSS1: if (ACCEL_FIT == 1 && mul_done) begin
         cross_n = product_reg[XB-2:0];
         n_less_n = n_sum - 1'b1;
         p_sum_n = {1'b0, p1_reg} + {1'b0, p2_reg};
@@ -416,8 +433,13 @@ module prenc_velocity #(
         product_n = {PB{1'b0}};
         state_n = S_CROSS2;
       end
-      S_CROSS2: if (mul_done) begin
+      S_CROSS2: if (ACCEL_FIT == 1 && mul_done) begin
         diff_n = diff;
+        state_n = S_DECIDE;
+      end
+      S_SUMS: if (ACCEL_FIT == 0) begin  // the two windows' sums, then the mean
+        n_less_n = n_sum - 1'b1;
+        p_sum_n = {1'b0, p1_reg} + {1'b0, p2_reg};
         state_n = S_DECIDE;
       end
       S_DECIDE: begin
@@ -444,36 +466,36 @@ module prenc_velocity #(
           state_n = S_FIT_V01;
         end
       end
-      S_FIT_V01: if (div_done) begin
+      S_FIT_V01: if (ACCEL_FIT == 1 && div_done) begin
         v01_n = quotient;
         div_start = 1'b1;
         div_num = {{(NB - MCB - FRAC + CALB){1'b0}}, n2_reg, {(FRAC - CALB){1'b0}}};
         div_den = {1'b0, p2_reg};
         state_n = S_FIT_V12;
       end
-      S_FIT_V12: if (div_done) begin
+      S_FIT_V12: if (ACCEL_FIT == 1 && div_done) begin
         d_n = d;
         state_n = S_FIT_D;
       end
-      S_FIT_D: begin
+      S_FIT_D: if (ACCEL_FIT == 1) begin
         div_start = 1'b1;
         div_num = {{(NB - QB - 2){1'b0}}, d_abs, 1'b0};
         div_den = p_sum_reg;
         negative_n = negative_reg ^ d_reg[QB];
         state_n = S_FIT_A;
       end
-      S_FIT_A: if (div_done) begin
+      S_FIT_A: if (ACCEL_FIT == 1 && div_done) begin
         multiplier_n = fit_multiplier << (MB - TB - 1);
         multiplicand_n = accel_fit;
         mul_left_n = TB[5:0] + 6'd1;
         product_n = {PB{1'b0}};
         state_n = S_FIT_MUL;
       end
-      S_FIT_MUL: if (mul_done) begin
+      S_FIT_MUL: if (ACCEL_FIT == 1 && mul_done) begin
         v_fit_n = v_fit_sum;
         state_n = S_FIT_LOAD;
       end
-      S_FIT_LOAD: begin
+      S_FIT_LOAD: if (ACCEL_FIT == 1) begin
         velocity_n = v_fit;
         accel_n = multiplicand_reg;
         valid_n = 1'b1;
@@ -589,11 +611,15 @@ module prenc_velocity #(
           p1_n = since_a_reg;
           n2_n = prev_n_reg;
           p2_n = prev_clocks_reg;
-          multiplier_n = n_wide << (MB - MCB);
-          multiplicand_n = {{(AB - TB){1'b0}}, prev_clocks_reg};
-          mul_left_n = MCB[5:0];
-          product_n = {PB{1'b0}};
-          state_n = S_CROSS1;
+          if (ACCEL_FIT == 1) begin
+            multiplier_n = n_wide << (MB - MCB);
+            multiplicand_n = {{(AB - TB){1'b0}}, prev_clocks_reg};
+            mul_left_n = MCB[5:0];
+            product_n = {PB{1'b0}};
+            state_n = S_CROSS1;
+          end else begin
+            state_n = S_SUMS;
+          end
         end else if ((closes || !have_prev_n) && accel_reg == {AB{1'b0}} && !held_reg) begin
           // The mean since A, unless an acceleration is known (after a reversal): then
           // the velocity integrates it until a fit.

@@ -83,6 +83,7 @@ BAD_PARAMETERS = [
     # the core's options, passed through the wrappers to the core's own checks
     ("prenc_wb", "HYPOTHESES", 2), ("prenc_wb", "LOCK_BOTH", 0), ("prenc_board", "CONV_REG", 2),
     ("prenc_board", "DUAL_VOTES", 8),
+    ("prenc_velocity", "ACCEL_FIT", 2), ("prenc_board", "ACCEL_FIT", 2),
 ]
 
 

@@ -33,12 +33,13 @@ POS_DELAY = 2      # the velocity's corrections -> prenc_fine_position's (pos_hy
 class Fine:
     def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
                  window: int = 2048, timer_bits: int = 26, cal: int = 0, table=None,
-                 quarter_windows: int = 0):
+                 quarter_windows: int = 0, accel_fit: int = 1):
         if cal not in (0, 1):
             raise ValueError(f"cal = {cal} must be 0 or 1")
         self.cal = cal
         self.velocity = Velocity(window=window, timer_bits=timer_bits,
-                                 cal_bits=CAL_BITS if cal else 0, quarter_windows=quarter_windows)
+                                 cal_bits=CAL_BITS if cal else 0, quarter_windows=quarter_windows,
+                                 accel_fit=accel_fit)
         self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
         self.lookup = CalLookup(n, table) if cal else None
         self.decoder_quarter = DecoderQuarter(n)

@@ -40,6 +40,9 @@ The estimator, on the quadrature decoder's registered step:
     the fit, with the run as the older anchor; a smaller failure fits if the update
     before failed with the same sign, and else shows the window's own mean (the run
     is stale): n1 / P1, accel 0.
+- Without the fit (accel_fit = 0, prenc_velocity's ACCEL_FIT, for a small FPGA): no
+  test and no multiplier; every close after another window loads the mean over both,
+  accel 0, DIV_CLOCKS + 2 cycles after the step (the sums, then the division).
 - Before the first window closes (after reset, a stop or an illegal transition): on
   each step, the mean velocity since A, accel 0.
 - A reversal (a step against the last step's direction) restarts the windows; the
@@ -137,12 +140,16 @@ class Velocity:
     cycle's edge."""
 
     (IDLE, MEAN, CROSS1, CROSS2, DECIDE, CONSTANT, FIT_V01, FIT_V12, FIT_D, FIT_A, FIT_MUL,
-     FIT_LOAD, DECAY) = range(13)
+     FIT_LOAD, DECAY, SUMS) = range(14)
 
     def __init__(self, window: int = 2048, timer_bits: int = 26, cal_bits: int = 0,
-                 quarter_windows: int = 0):
+                 quarter_windows: int = 0, accel_fit: int = 1):
         if quarter_windows not in (0, 1):
             raise ValueError(f"quarter_windows = {quarter_windows} must be 0 or 1")
+        if accel_fit not in (0, 1):
+            raise ValueError(f"accel_fit = {accel_fit} must be 0 or 1")
+        if not accel_fit and quarter_windows:
+            raise ValueError("accel_fit = 0 needs quarter_windows = 0 (runs need the test)")
         if not 12 <= timer_bits <= 32:
             raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
         if not 16 <= window < (1 << (timer_bits - 1)):
@@ -153,6 +160,7 @@ class Velocity:
         self.timer_bits = timer_bits
         self.cal_bits = cal_bits
         self.quarter_windows = quarter_windows
+        self.accel_fit = accel_fit
         self.mul_bits = COUNT_BITS + cal_bits
         self.timer_max = (1 << timer_bits) - 1
         self.full_clocks = full_clocks(timer_bits, cal_bits)
@@ -258,9 +266,11 @@ class Velocity:
         elif state == self.CROSS2 and mul_done:
             self.diff = self.cross - self.product
             self.state = self.DECIDE
+        elif state == self.SUMS:   # accel_fit = 0: the sums registered, then the mean
+            self.state = self.DECIDE
         elif state == self.DECIDE:
             diff = self.diff
-            constant = -(self.n1 + self.n2) < diff < self.n1 + self.n2
+            constant = not self.accel_fit or -(self.n1 + self.n2) < diff < self.n1 + self.n2
             # An acceleration that lasts: the test failed twice with the same sign, or
             # (quarter windows) by BIG times its bound or more.
             big = self.quarter_windows and not -BIG * (self.n1 + self.n2) < diff < BIG * (self.n1 + self.n2)
@@ -370,7 +380,10 @@ class Velocity:
                 self.sign = 1 if step_cw else -1
                 if closes and self.have_prev:
                     self.n1, self.p1, self.n2, self.p2 = n_cal, self.since_a, self.prev_n, self.prev_clocks
-                    self._multiply(n_cal, self.prev_clocks, self.mul_bits, self.CROSS1)
+                    if self.accel_fit:
+                        self._multiply(n_cal, self.prev_clocks, self.mul_bits, self.CROSS1)
+                    else:
+                        self.state = self.SUMS
                 elif (closes or not self.have_prev) and accel0 == 0 and not held0:
                     # The mean since A, unless an acceleration is known (after a reversal):
                     # then the velocity integrates it until a fit.

@@ -15,7 +15,9 @@ counts them. With CAL = 1 the disc is a printed one and the block reads its cali
 table from a file; the stimulus rewrites some of its words (a little off) while the
 disc turns, some near the quarter in use. With QUARTER_WINDOWS = 1 the windows close on
 any edge, and the test counts the decisions: a window joining a run, a fit, a fit at a
-single large failure and a first small failure (the window's own mean).
+single large failure and a first small failure (the window's own mean). With
+ACCEL_FIT = 0 (no fit, the small FPGA's velocity) every close loads the mean over two
+windows: the sequencer's states without the multiplier run, and nothing is held.
 """
 
 from __future__ import annotations
@@ -103,15 +105,17 @@ async def matches_the_models_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_FINE_SEED", rng().randrange(1 << 30)))  # replay a draw
     cal = int(dut.CAL.value)
     quarter = int(dut.QUARTER_WINDOWS.value)
+    fit = int(dut.ACCEL_FIT.value)
     inputs, total = stimulus(seed, cal)
     table = read(os.environ["PRENC_CAL_FILE"], n=N).c if cal else None
     model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
-                 timer_bits=TIMER_BITS, cal=cal, table=table, quarter_windows=quarter)
+                 timer_bits=TIMER_BITS, cal=cal, table=table, quarter_windows=quarter,
+                 accel_fit=fit)
     vel = model.velocity
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
-    seen = {state: 0 for state in range(13)}
+    seen = {state: 0 for state in range(14)}
     stops = holds = looked_up = 0
     decisions = {"run": 0, "fit": 0, "fit at once": 0, "one failure": 0}
     columns = [inputs[k].tolist() for k in names]
@@ -137,22 +141,26 @@ async def matches_the_models_clock_by_clock(dut):
                     "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
                     "fine_valid": model.fine_valid, "interpolated": model.interpolated}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
-    dut._log.info("seed %d, CAL %d, QUARTER_WINDOWS %d: %d clocks, cycles per sequencer state "
-                  "%s, %d stops, %d clocks held, %d with both words of the table, decisions %s",
-                  seed, cal, quarter, total, seen, stops, holds, looked_up, decisions)
-    assert all(seen[s] > 0 for s in range(13)), seen   # every state of the sequencer ran
-    assert stops >= 2 and holds > 0
+    dut._log.info("seed %d, CAL %d, QUARTER_WINDOWS %d, ACCEL_FIT %d: %d clocks, cycles per "
+                  "sequencer state %s, %d stops, %d clocks held, %d with both words of the table, "
+                  "decisions %s", seed, cal, quarter, fit, total, seen, stops, holds, looked_up, decisions)
+    states = ([vel.IDLE, vel.MEAN, vel.SUMS, vel.DECIDE, vel.CONSTANT, vel.DECAY] if not fit
+              else [s for s in range(14) if s != vel.SUMS])
+    assert all(seen[s] > 0 for s in states), seen   # every state of the sequencer ran
+    assert all(seen[s] == 0 for s in range(14) if s not in states), seen
+    assert stops >= 2 and (holds > 0) == bool(fit)
     assert not cal or looked_up > 0.9 * total
-    assert decisions["fit"] > 0
+    assert (decisions["fit"] > 0) == bool(fit)
     assert not quarter or min(decisions.values()) > 0, decisions
 
 
-@pytest.mark.parametrize("cal, quarter", [(0, 0), (1, 0), (0, 1), (1, 1)])
+@pytest.mark.parametrize("cal, quarter, fit", [(0, 0, 1), (1, 0, 1), (0, 1, 1), (1, 1, 1), (0, 0, 0),
+                                              (1, 0, 0)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_fine(simulator, cal, quarter):
+def test_prenc_fine(simulator, cal, quarter, fit):
     parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
                   "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS, "CAL": cal,
-                  "QUARTER_WINDOWS": quarter}
+                  "QUARTER_WINDOWS": quarter, "ACCEL_FIT": fit}
     env = {}
     if cal:
         parameters["CAL_FILE"] = env["PRENC_CAL_FILE"] = cal_file()
