@@ -397,7 +397,7 @@ def fine_section() -> bool:
     """Section 9: fine position and velocity beside the baselines; the goals of issue 37."""
     from prenc.virtual import fine_bench as fb
 
-    ours = ("ours", "quarter")
+    ours = ("ours", "quarter", "mean")
     names = ours + ("period", "mixed", "count")
     print(f"\n9. Fine position and velocity: N = {fb.N}, {fb.CLK_HZ / 1e6:.0f} MHz, FILTER = {fb.FILTER}, "
           f"FINE_BITS = {fb.FINE_BITS}, lookahead {fb.LOOKAHEAD_HALVES / 2} clocks")
@@ -405,11 +405,12 @@ def fine_section() -> bool:
     print("   (RMS / max), velocity error in % of the true speed (reversal, stop: of 600 rpm), RMS / max.")
     print(f"   ours: the default, full-cycle windows of at least WINDOW = {fb.WINDOW} clocks (any disc);")
     print(f"   quarter: QUARTER_WINDOWS = 1, windows between any edges of at least {fb.QUARTER_WINDOW} clocks")
-    print("   (for a disc whose edges are accurate, or calibrated: section 10).")
+    print("   (for a disc whose edges are accurate, or calibrated: section 10); mean: ACCEL_FIT = 0, the")
+    print("   default's windows without the fit, the mean of the last two (a small FPGA's: the iCEBreaker's).")
     print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
     print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
     print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")
-    print("   extrapolation give every estimator its fine position. best: ours / quarter at least as good as")
+    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean at least as good as")
     print("   every baseline (RMS; equal within 1 % counts), in position (p), velocity (v), both (pv) or neither (-).")
     failed = False
     results: dict[str, dict[str, dict]] = {}
@@ -432,7 +433,7 @@ def fine_section() -> bool:
             for mine in ours:
                 good = "".join(letter for letter, k in (("p", "fine"), ("v", "velocity"))
                                if all(getattr(rows[mine], k)[0] <= 1.01 * getattr(rows[n], k)[0] + 1e-9
-                                      for n in names[2:]))
+                                      for n in names[len(ours):]))
                 best.append(good or "-")
             line = f"   {case.name:<34} {cells[0]:>15} " + " ".join(f"{c:>17}" for c in cells[1:])
             line += "  " + " / ".join(best)
@@ -454,7 +455,8 @@ def fine_section() -> bool:
     ideal = results["ideal disc"]
     steady = [f"{r} rpm" for r in fb.STEADY_RPM if r >= 10]
     for mine, title in (("quarter", "quarter windows (an accurate disc's configuration)"),
-                        ("ours", "the default, full-cycle windows")):
+                        ("ours", "the default, full-cycle windows"),
+                        ("mean", "ACCEL_FIT = 0, the mean of two windows (a small FPGA's)")):
         # The goals count for the configuration meant for an ideal disc; the default's
         # are shown beside them.
         counts = mine == "quarter"
@@ -492,20 +494,21 @@ def cell_counts(result, family: str) -> str:
 
 
 def fine_logic_rows() -> list[str]:
-    """What the quarter windows cost: prenc_fine with QUARTER_WINDOWS 0 and 1 (Yosys,
-    iCE40 and ECP5 cells)."""
+    """What the configurations cost: prenc_fine with QUARTER_WINDOWS 0 and 1, and with
+    ACCEL_FIT 0 (Yosys, iCE40 and ECP5 cells)."""
     sys.path.insert(0, str(REPO / "tb"))
     from yosys import synthesize
 
     rows = []
     for family in ("ice40", "ecp5"):
         cells = []
-        for quarter in (0, 1):
+        for label, extra in (("QUARTER_WINDOWS = 0", {"QUARTER_WINDOWS": 0}),
+                             ("QUARTER_WINDOWS = 1", {"QUARTER_WINDOWS": 1}), ("ACCEL_FIT = 0", {"ACCEL_FIT": 0})):
             try:
-                result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, "QUARTER_WINDOWS": quarter})
-                cells.append(f"QUARTER_WINDOWS = {quarter}: {cell_counts(result, family)}")
+                result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, **extra})
+                cells.append(f"{label}: {cell_counts(result, family)}")
             except RuntimeError as err:
-                cells.append(f"QUARTER_WINDOWS = {quarter}: FAILED: {str(err).splitlines()[0]}")
+                cells.append(f"{label}: FAILED: {str(err).splitlines()[0]}")
         rows.append(f"{family}: " + "; ".join(cells))
     return rows
 
