@@ -227,6 +227,7 @@ async def registers_after_reset_and_writes(dut):
     assert await regs.PARAMS.fine.read() == int(dut.FINE.value)
     assert await regs.PARAMS.fine_bits.read() == int(dut.FINE_BITS.value)
     assert await regs.PARAMS.quarter_windows.read() == int(dut.QUARTER_WINDOWS.value)
+    assert await regs.PARAMS.mean_only.read() == 1 - int(dut.ACCEL_FIT.value)
     assert await regs.STATUS.valid.read() == 0 and await regs.STATUS.mode.read() == 0
     for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME", "SNAP_FINE_POS",
                  "SNAP_VELOCITY", "TRACK_ERRORS"):
@@ -505,6 +506,15 @@ def test_prenc_wb_with_quarter_windows():
     with regmap_env() as env:
         run(__file__, TOPLEVEL, "verilator",
             parameters=wb_parameters(10, 2) | {"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640},
+            extra_env={**env, "COCOTB_TEST_FILTER": tests})
+
+
+def test_prenc_wb_without_the_fit():
+    """ACCEL_FIT = 0 (the velocity a mean of two windows, for a small FPGA): PARAMS says so,
+    and at a steady turn the snapshots' fine position and velocity meet the same goals."""
+    tests = "registers_after_reset_and_writes|the_snapshot_holds_the_fine_position_and_velocity_of_its_clock"
+    with regmap_env() as env:
+        run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(10, 2) | {"ACCEL_FIT": 0},
             extra_env={**env, "COCOTB_TEST_FILTER": tests})
 
 
