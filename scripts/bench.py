@@ -406,7 +406,7 @@ def fine_section() -> bool:
     print(f"   ours: the default, full-cycle windows of at least WINDOW = {fb.WINDOW} clocks (any disc);")
     print(f"   quarter: QUARTER_WINDOWS = 1, windows between any edges of at least {fb.QUARTER_WINDOW} clocks")
     print("   (for a disc whose edges are accurate, or calibrated: section 10); mean: ACCEL_FIT = 0, the")
-    print("   default's windows without the fit, the mean of the last two (a small FPGA's: the iCEBreaker's).")
+    print("   default's windows without the fit, the mean of the last two (for a small FPGA).")
     print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
     print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
     print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")

@@ -499,22 +499,16 @@ def test_prenc_wb_with_a_calibration_table(simulator):
                        else "registers_after_reset_and_writes"})
 
 
-def test_prenc_wb_with_quarter_windows():
-    """QUARTER_WINDOWS = 1 (VELOCITY_WINDOW 640, as the bench at 30 MHz): PARAMS says so,
-    and the snapshots' fine position and velocity meet the same goals."""
+@pytest.mark.parametrize("velocity", [{"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640}, {"ACCEL_FIT": 0}],
+                         ids=["quarter_windows", "without_the_fit"])
+def test_prenc_wb_velocity_configurations(velocity):
+    """The other velocity configurations: QUARTER_WINDOWS = 1 (VELOCITY_WINDOW 640, as the
+    bench at 30 MHz) and ACCEL_FIT = 0 (the mean of two windows, for a small FPGA). PARAMS
+    says which, and at a steady turn the snapshots' fine position and velocity meet the
+    same goals."""
     tests = "registers_after_reset_and_writes|the_snapshot_holds_the_fine_position_and_velocity_of_its_clock"
     with regmap_env() as env:
-        run(__file__, TOPLEVEL, "verilator",
-            parameters=wb_parameters(10, 2) | {"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640},
-            extra_env={**env, "COCOTB_TEST_FILTER": tests})
-
-
-def test_prenc_wb_without_the_fit():
-    """ACCEL_FIT = 0 (the velocity a mean of two windows, for a small FPGA): PARAMS says so,
-    and at a steady turn the snapshots' fine position and velocity meet the same goals."""
-    tests = "registers_after_reset_and_writes|the_snapshot_holds_the_fine_position_and_velocity_of_its_clock"
-    with regmap_env() as env:
-        run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(10, 2) | {"ACCEL_FIT": 0},
+        run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(10, 2) | velocity,
             extra_env={**env, "COCOTB_TEST_FILTER": tests})
 
 
