@@ -27,8 +27,9 @@ MANEUVER[0], the jerk density is MANEUVER[1] times larger for the next edge.
 
 scheduled: the same filter without a covariance at run time, the form hardware would
 take: its gains come from a table by the speed (STEPS entries an octave) and the age,
-the edges since the filter started (up to AGES); a maneuver sets the age back to
-AGE_MANEUVER. The table is the covariance recursion run at a constant speed.
+the edges since the filter started (up to AGES); each edge of a maneuver halves the
+age (not below AGE_FLOOR). The table is the covariance recursion run at a constant
+speed.
 
 Both give their output by prenc_velocity's rules: 0 or the sign of the last step, and,
 an edge overdue by two predicted quarter periods, a linear decay to 0 at three; an
@@ -132,7 +133,7 @@ def kalman_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
 
 STEPS = 4           # the gain table's entries per octave of speed
 AGES = 1024         # ... and its ages: the gains after 0..AGES-1 edges from the start
-AGE_MANEUVER = 12   # a maneuver sets the age back to this
+AGE_FLOOR = 4       # each edge of a maneuver halves the age, down to this
 _TABLE: dict[tuple[int, float], list[tuple[np.ndarray, float]]] = {}
 
 
@@ -171,7 +172,7 @@ def scheduled_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
         else:
             state = transition(float(c - last)) @ state
             if abs(bias) > MANEUVER[0]:
-                age, bias = min(age, AGE_MANEUVER), 0.0
+                age = max(min(age, AGES - 1) // 2, AGE_FLOOR)
             index = int(round(STEPS * math.log2(max(abs(state[1]), 1e-9))))
             gain, spread = table_gains(index, age, sigma)
             innovation = x - state[0]
