@@ -53,8 +53,10 @@ def test_a_stop_reads_0_and_a_reversal_the_new_sign(name):
     sync = fb.sync_stream(theta, None)
     velocity = ESTIMATORS[name](sync, study.SIGMA["ideal"])
     edges = np.flatnonzero(sync.step)
-    resting = edges[(edges > stop)][0]          # the first step after the rest
-    assert np.all(velocity[stop + 45_000:resting] == 0)
+    settled = stop + 45_000                     # 1.5 ms into the 2 ms rest
+    moving = edges[edges > settled][0]          # the first step of the reversal
+    assert moving - settled > 10_000
+    assert np.all(velocity[settled:moving] == 0)
     # 0 or the sign of the last step, at every clock.
     direction = np.where(sync.cw[edges] == 1, 1, -1)
     last = np.zeros(len(theta), dtype=np.int64)
