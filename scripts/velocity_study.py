@@ -64,9 +64,9 @@ def stopped(velocity: float, clocks: int) -> bool:
     return clocks >= OVERDUE[1] / max(abs(velocity), 1e-12)
 
 
-def jerk_density(v: float, q600: float = Q600) -> float:
+def jerk_density(v: float) -> float:
     ratio = abs(v / V600)
-    return q600 * ratio ** (QEXP if ratio >= 1 else QEXP_LOW)
+    return Q600 * ratio ** (QEXP if ratio >= 1 else QEXP_LOW)
 
 
 def transition(t: float) -> np.ndarray:
@@ -79,6 +79,17 @@ def process_noise(q: float, t: float) -> np.ndarray:
     return q * np.array([[t ** 5 / 20, t ** 4 / 8, t ** 3 / 6],
                          [t ** 4 / 8, t ** 3 / 3, t ** 2 / 2],
                          [t ** 3 / 6, t ** 2 / 2, t]])
+
+
+def update(cov: np.ndarray, f: np.ndarray, noise: np.ndarray, v: float,
+           sigma: float) -> tuple[np.ndarray, np.ndarray, float]:
+    """One edge of the filter's covariance: predicted over f (with the process noise),
+    then measured at velocity v (a clock's quantization, v^2 / 12, and the disc's edge
+    error sigma). Returns the new covariance, the gains and the innovation's variance."""
+    cov = f @ cov @ f.T + noise
+    spread = cov[0, 0] + v * v / 12 + sigma ** 2
+    gain = cov[:, 0] / spread
+    return cov - np.outer(gain, cov[0, :]), gain, spread
 
 
 def shown(velocity: float, accel: float, cw: bool, clocks: int) -> np.ndarray:
@@ -118,13 +129,10 @@ def kalman_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
                 noise = noise * MANEUVER[1]
             f = transition(t)
             state = f @ state
-            cov = f @ cov @ f.T + noise
-            spread = cov[0, 0] + state[1] ** 2 / 12 + sigma ** 2
-            gain = cov[:, 0] / spread
+            cov, gain, spread = update(cov, f, noise, state[1], sigma)
             innovation = x - state[0]
             bias += (innovation / math.sqrt(spread) - bias) * MANEUVER[2]
             state = state + gain * innovation
-            cov = cov - np.outer(gain, cov[0, :])
         end = steps[i + 1][0] if i + 1 < len(steps) else total
         out[c:end] = shown(state[1], state[2], cw, end - c)
         last = c
@@ -139,19 +147,18 @@ _TABLE: dict[tuple[int, float], list[tuple[np.ndarray, float]]] = {}
 
 def table_gains(index: int, age: int, sigma: float) -> tuple[np.ndarray, float]:
     """The gains and the innovation's variance after `age` edges from the start at a
-    constant speed of 2^(index / STEPS) quarters per clock: the table hardware would hold."""
+    constant speed of 2^(index / STEPS) quarters per clock: the table hardware would hold.
+    Its start knows the speed to within itself (velocity variance v^2, acceleration
+    variance v^4 / 100), since the first interval gave it."""
     key = (index, sigma)
     if key not in _TABLE:
         v = 2.0 ** (index / STEPS)
         t = 1.0 / v
         f, noise = transition(t), process_noise(jerk_density(v), t)
-        cov = np.diag([0.1, v * v, (v * v) ** 2 * 1e-2])
+        cov = np.diag([PRIOR[0], v * v, (v * v) ** 2 * 1e-2])
         rows = []
         for _ in range(AGES):
-            cov = f @ cov @ f.T + noise
-            spread = cov[0, 0] + v * v / 12 + sigma ** 2
-            gain = cov[:, 0] / spread
-            cov = cov - np.outer(gain, cov[0, :])
+            cov, gain, spread = update(cov, f, noise, v, sigma)
             rows.append((gain, spread))
         _TABLE[key] = rows
     return _TABLE[key][min(age, AGES - 1)]
