@@ -46,6 +46,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "sim"))
+from prenc.fine import tracker_gains  # noqa: E402
+from prenc.fine.tracker import Tracker  # noqa: E402
 from prenc.virtual import fine_bench as fb  # noqa: E402
 
 Q600 = 1e-23                            # jerk density at 600 rpm, quarters^2 / clock^5
@@ -193,9 +195,22 @@ def scheduled_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
     return out
 
 
-COLUMNS = ("ours", "quarter", "kalman", "scheduled", "period", "mixed", "count")
+def tracker_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
+    """The integer model of prenc_tracker (prenc.fine.tracker), its table for this disc."""
+    model = Tracker(tracker_gains.table(fb.N, fb.CLK_HZ, sigma))
+    total = len(sync.step)
+    out = np.zeros(total)
+    step, cw = sync.step.tolist(), sync.cw.tolist()
+    scale = 2.0 ** -40
+    for c in range(total):
+        model.clock(step[c], cw[c])
+        out[c] = model.velocity * scale
+    return out
+
+
+COLUMNS = ("ours", "quarter", "kalman", "scheduled", "tracker", "period", "mixed", "count")
 BASELINES = ("period", "mixed", "count")
-CANDIDATES = ("kalman", "scheduled")
+CANDIDATES = ("kalman", "scheduled", "tracker")
 
 
 def study(disc: str, rows: list[str] | None = None) -> list[str]:
@@ -215,6 +230,7 @@ def study(disc: str, rows: list[str] | None = None) -> list[str]:
                     "quarter": fb.run_fine(sync, quarter_windows=1)["velocity"],
                     "kalman": kalman_velocity(sync, SIGMA[disc]),
                     "scheduled": scheduled_velocity(sync, SIGMA[disc]),
+                    "tracker": tracker_velocity(sync, SIGMA[disc]),
                     "period": fb.period_velocity(sync),
                     "mixed": fb.sampled_velocity(sync, True),
                     "count": fb.sampled_velocity(sync, False)}

@@ -16,7 +16,7 @@
 //   NAME   the owner's parameter that names the file, for the message
 //   FILE   the $readmemh file
 //   DEPTH  words the file must supply, 1..2^24
-//   WIDTH  bits per word, 1..64
+//   WIDTH  bits per word, 1..128
 
 // Guarded: more than one block's file list names it (the converter's, the calibration
 // table's), and a top's list may include both.

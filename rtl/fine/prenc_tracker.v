@@ -1,0 +1,495 @@
+// SPDX-License-Identifier: Apache-2.0
+// prenc_tracker: velocity and acceleration from the sync track's edges by a tracking
+// filter whose gains come from a table (a Kalman filter's, computed once for the disc
+// and the clock by prenc.fine.tracker_gains; docs/fine.md).
+//
+// Units: quarters and clocks. The state is fixed point:
+//   pos   the predicted position less the last edge crossed, 2^-40 quarter (+-4)
+//   vel   quarters per clock, 2^-40 (+-2)
+//   acc   quarters per clock^2, 2^-60
+// Every clock pos += vel, vel += acc >>> 20. On a step of the decoder (d: +1 or -1 for
+// the next edge the same way, 0 for the same edge back after a reversal):
+// - the innovation e = d - (pos + vel), 2^-20 quarter (saturated), and pos is
+//   referred to the new edge (pos + vel - d);
+// - the gains: the table's word at the column of |vel| (2 an octave) and the bin of
+//   the filter's age (its updates since the start; with a maneuver seen, the age is
+//   halved first, not below 4). A maneuver: the innovations' running mean (weight
+//   1/4, in standard deviations: the gain gz) above 1;
+// - four serial multipliers, a mantissa bit a clock (12 clocks), then one shifter, a
+//   gain a clock; the corrections land APPLY = 32 clocks after the step as if they had
+//   at the step: acc += g2 e, vel += g1 e + 32 (g2 e >>> 20),
+//   pos += g0 e + 32 g1 e + 496 (g2 e >>> 20). A step while an update is under way
+//   is referred but measures nothing.
+// - The start: the first step (after reset, a stop, an illegal transition) is an
+//   anchor; the second gives the velocity, a quarter over the clocks between them
+//   (prenc_divider: DIV_CLOCKS later, the position moved on by as many clocks), and
+//   the filter starts at age 0. A reversal or a step during the division is an anchor.
+// - The output: vel, 0 unless it has the last step's sign; once pos is 2 quarters past
+//   the last edge (an edge overdue), a level from the velocity shown falls by about
+//   v^2 a clock (|vel| shifted by its leading one), reaching 0 within 2.5 to 3
+//   predicted quarter periods: a stop (0, valid; the next step is an anchor), as is no
+//   step for 2^TIMER_BITS - 1 clocks. An illegal transition drops the velocity (valid
+//   0) until the next estimate.
+// Model: prenc.fine.tracker.Tracker, which this equals clock for clock.
+//
+// Latency: the velocity output is registered (the state of the clock before); an
+// update lands APPLY = 32 clocks after its step, compensated to the step's instant.
+//
+// Parameters
+//   TIMER_BITS   width of the clocks counted, 12..32 (26: 2.2 s at 30 MHz)
+//   GAIN_FILE    the gain table ($readmemh, 1,280 words of 72 bits: prenc.fine.
+//                tracker_gains's format, `python -m prenc gains`); required
+//
+// Ports
+//   step, step_cw, illegal   the quadrature decoder's registered outputs
+//   velocity     quarters per clock, signed, 48 fractional bits (prenc_velocity's unit)
+//   accel        quarters per clock per clock, signed, 48 fractional bits
+//   valid        the velocity is an estimate (0 after reset and an illegal transition)
+`resetall
+`timescale 1ns / 1ps
+`default_nettype none
+
+module prenc_tracker #(
+  parameter integer TIMER_BITS = 26,
+  parameter         GAIN_FILE  = ""
+) (
+  input  wire        clk,
+  input  wire        rst,
+  input  wire        step,
+  input  wire        step_cw,
+  input  wire        illegal,
+  output wire [50:0] velocity,
+  output wire [49:0] accel,
+  output wire        valid
+);
+
+  generate
+    if (TIMER_BITS < 12 || TIMER_BITS > 32) begin : g_bad_timer_bits
+      initial $display("ERROR: %m: parameter TIMER_BITS = %0d is out of range 12..32", TIMER_BITS);
+      prenc_tracker_parameter_TIMER_BITS_out_of_range_12_to_32 u_stop ();
+    end
+    if (GAIN_FILE == "") begin : g_no_gain_file
+      initial $display("ERROR: %m: parameter GAIN_FILE is empty: the tracker needs its gain table");
+      prenc_tracker_parameter_GAIN_FILE_is_required u_stop ();
+    end
+  endgenerate
+
+  localparam integer TB    = TIMER_BITS;
+  localparam integer PB    = 44;   // pos
+  localparam integer VB    = 42;   // vel
+  localparam integer AB    = 52;   // acc
+  localparam integer EB    = 23;   // the innovation
+  localparam integer MB    = 12;   // a gain's mantissa
+  localparam integer XB    = EB + MB;   // a product
+  localparam integer RB    = 52;   // a correction
+  localparam integer ZB    = 16;   // bias
+  localparam integer SB    = 54;   // the state's sums
+  localparam integer WB    = 72;   // a table word
+  localparam integer BINS  = 40;
+  localparam integer DEPTH = 32 * BINS;
+  localparam integer QB    = 49;   // the divider's quotient (48 fractional bits)
+  localparam integer DIV_CLOCKS = QB + 2;
+
+  localparam [1:0] P_NONE = 2'd0, P_ANCHOR = 2'd1, P_DIVIDE = 2'd2, P_TRACK = 2'd3;
+  localparam [5:0] S_READ = 6'd1, S_MUL = 6'd2, S_ACC = 6'd14, S_VEL = 6'd15, S_POS = 6'd16,
+                   S_BIAS = 6'd17, S_APPLY = 6'd32;
+
+  localparam signed [SB-1:0] POS_LIMIT = {{(SB - 43){1'b0}}, 1'b1, 42'd0};   // 4 quarters
+  localparam signed [SB-1:0] ONE       = {{(SB - 41){1'b0}}, 1'b1, 40'd0};   // a quarter
+  localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
+  localparam signed [AB-1:0] A_TOP     = {1'b0, {(AB - 1){1'b1}}};
+  localparam signed [EB-1:0] E_TOP     = {1'b0, {(EB - 1){1'b1}}};
+  localparam signed [ZB-1:0] Z_TOP     = {1'b0, {(ZB - 1){1'b1}}};
+  localparam [TB-1:0]        TIMER_MAX = {TB{1'b1}};
+
+  // The gain table.
+  reg [WB-1:0] gains [0:DEPTH-1];
+  initial $readmemh(GAIN_FILE, gains);
+`ifndef SYNTHESIS
+  generate
+    if (GAIN_FILE != "") begin : g_gain_check
+      prenc_rom_check #(
+        .NAME  ("GAIN_FILE"),
+        .FILE  (GAIN_FILE),
+        .DEPTH (DEPTH),
+        .WIDTH (WB)
+      ) u_gain_check ();
+    end
+  endgenerate
+`endif
+
+  // Registers (the model's attributes of the same names).
+  reg [1:0]           phase_reg;
+  reg                 valid_reg;
+  reg signed [VB-1:0] velocity_reg;
+  reg                 cw_reg;
+  reg [TB-1:0]        since_reg;
+  reg signed [PB-1:0] pos_reg;
+  reg signed [VB-1:0] vel_reg;
+  reg signed [AB-1:0] acc_reg;
+  reg [9:0]           age_reg;
+  reg signed [ZB-1:0] bias_reg;
+  reg [5:0]           seq_reg;
+  reg signed [EB-1:0] e_reg;
+  reg [10:0]          address_reg;
+  reg [WB-1:0]        word_reg;
+  reg signed [XB-1:0] product0_reg;
+  reg signed [XB-1:0] product1_reg;
+  reg signed [XB-1:0] product2_reg;
+  reg signed [XB-1:0] product3_reg;
+  reg signed [RB-1:0] acc_corr_reg;
+  reg signed [RB-1:0] vel_corr_reg;
+  reg signed [RB-1:0] pos_corr_reg;
+  reg                 negative_reg;
+  reg                 decaying_reg;
+  reg [VB-1:0]        level_reg;
+  reg [RB-1:0]        slope_reg;
+
+  // The divider, for the first velocity: 2^48 / the clocks between two steps.
+  wire          div_done;
+  wire [QB-1:0] quotient;
+  reg           div_start;
+  reg           div_cancel;
+
+  prenc_divider #(
+    .NUM_BITS      (QB + 1),
+    .DEN_BITS      (TB),
+    .QUOTIENT_BITS (QB)
+  ) u_divider (
+    .clk      (clk),
+    .rst      (rst),
+    .start    (div_start),
+    .cancel   (div_cancel),
+    .num      ({2'b01, {(QB - 1){1'b0}}}),
+    .den      (since_reg),
+    .done     (div_done),
+    .quotient (quotient)
+  );
+
+  // |vel| and its leading one; the table's column (2 an octave from 2^-21, 0..31).
+  wire [VB-2:0] speed = vel_reg[VB-1] ? -vel_reg[VB-2:0] : vel_reg[VB-2:0];
+  reg  [5:0]    lead_one;
+  integer       i;
+  always @(*) begin
+    lead_one = 6'd0;
+    for (i = 1; i < VB - 1; i = i + 1) begin
+      if (speed[i]) lead_one = i[5:0];
+    end
+  end
+  wire          half = (lead_one == 6'd0) ? 1'b0 : speed[lead_one - 6'd1];
+  wire [6:0]    col_raw = {lead_one, half};       // 2 lead_one + half
+  wire [4:0]    col = (col_raw < 7'd38) ? 5'd0 : (col_raw > 7'd69) ? 5'd31 : col_raw[4:0] - 5'd6;
+
+  // The age, halved on a maneuver (not below 4), and its bin (0..15, then 4 an octave).
+  wire [ZB-1:0] bias_abs = bias_reg[ZB-1] ? -bias_reg : bias_reg;
+  wire          maneuver = bias_abs > 16'd256;
+  wire [9:0]    age_half = {1'b0, age_reg[9:1]};
+  wire [9:0]    age_used = !maneuver ? age_reg : (age_half < 10'd4) ? 10'd4 : age_half;
+  reg  [5:0]    age_bin;
+  always @(*) begin
+    if (age_used[9])      age_bin = 6'd36 + {4'd0, age_used[8:7]};
+    else if (age_used[8]) age_bin = 6'd32 + {4'd0, age_used[7:6]};
+    else if (age_used[7]) age_bin = 6'd28 + {4'd0, age_used[6:5]};
+    else if (age_used[6]) age_bin = 6'd24 + {4'd0, age_used[5:4]};
+    else if (age_used[5]) age_bin = 6'd20 + {4'd0, age_used[4:3]};
+    else if (age_used[4]) age_bin = 6'd16 + {4'd0, age_used[3:2]};
+    else                  age_bin = {2'd0, age_used[3:0]};
+  end
+  wire [10:0]   address = {1'b0, col, 5'd0} + {3'd0, col, 3'd0} + {5'd0, age_bin};
+
+  // The word's fields: {gz, g2, g1, g0}, each {shift[5:0], mantissa[11:0]}.
+  wire [MB-1:0] m0 = word_reg[11:0];
+  wire [MB-1:0] m1 = word_reg[29:18];
+  wire [MB-1:0] m2 = word_reg[47:36];
+  wire [MB-1:0] m3 = word_reg[65:54];
+  wire [5:0]    s0 = word_reg[17:12];
+  wire [5:0]    s1 = word_reg[35:30];
+  wire [5:0]    s2 = word_reg[53:48];
+  wire [5:0]    s3 = word_reg[71:66];
+
+  // The multipliers: a mantissa bit a clock, MSB first.
+  wire [3:0]          bit_index = 4'd11 - seq_reg[3:0] + 4'd2;   // 11 at S_MUL
+  wire signed [XB-1:0] e_wide = {{(XB - EB){e_reg[EB-1]}}, e_reg};
+  wire                 mul = (seq_reg >= S_MUL) && (seq_reg < S_ACC);
+
+  // The shifter: (value << 24) >>> amount, kept to RB bits.
+  reg signed [VB:0]   sh_value;
+  reg [5:0]           sh_amount;
+  always @(*) begin
+    case (seq_reg)
+      S_ACC:   begin sh_value = {{(VB + 1 - XB){product2_reg[XB-1]}}, product2_reg}; sh_amount = s2; end
+      S_VEL:   begin sh_value = {{(VB + 1 - XB){product1_reg[XB-1]}}, product1_reg}; sh_amount = s1; end
+      S_POS:   begin sh_value = {{(VB + 1 - XB){product0_reg[XB-1]}}, product0_reg}; sh_amount = s0; end
+      S_BIAS:  begin sh_value = {{(VB + 1 - XB){product3_reg[XB-1]}}, product3_reg}; sh_amount = s3; end
+      default: begin sh_value = {2'b00, speed}; sh_amount = 6'd63 - lead_one; end
+    endcase
+  end
+  wire signed [VB+24:0] sh_wide = $signed({sh_value, 24'd0}) >>> sh_amount;
+  wire signed [RB-1:0]  shifted = sh_wide[RB-1:0];
+
+  // The output: vel with the last step's sign (else 0), under the decay's level.
+  wire          same = cw_reg ? (!vel_reg[VB-1] && (vel_reg != {VB{1'b0}})) : vel_reg[VB-1];
+  wire [VB-1:0] magnitude0 = same ? {1'b0, speed} : {VB{1'b0}};
+  wire [VB-1:0] magnitude = (decaying_reg && level_reg < magnitude0) ? level_reg : magnitude0;
+  wire signed [VB-1:0] shown = (phase_reg != P_TRACK) ? {VB{1'b0}}
+                               : cw_reg ? $signed(magnitude) : -$signed(magnitude);
+
+  // The state's sums (SB bits), saturated when registered.
+  wire signed [SB-1:0] pos_w      = {{(SB - PB){pos_reg[PB-1]}}, pos_reg};
+  wire signed [SB-1:0] vel_w      = {{(SB - VB){vel_reg[VB-1]}}, vel_reg};
+  wire signed [SB-1:0] acc_step   = {{(SB - AB + 20){acc_reg[AB-1]}}, acc_reg[AB-1:20]};
+  wire signed [SB-1:0] acc_w      = {{(SB - AB){acc_reg[AB-1]}}, acc_reg};
+  wire signed [SB-1:0] predicted  = pos_w + vel_w;
+  wire signed [SB-1:0] travel     = cw_reg ? pos_w : -pos_w;
+  wire                 overdue    = travel >= (ONE + ONE);
+  wire signed [RB-1:0] acc_corr_v = {{15{acc_corr_reg[RB-1]}}, acc_corr_reg[RB-1:15]};
+  wire signed [RB+9:0] acc_496    = acc_corr_reg * 10'sd496;
+  wire signed [RB-1:0] acc_corr_p = {{10{acc_496[RB+9]}}, acc_496[RB+9:20]};
+  // The first velocity, 2^48 / clocks >> 8, and where the disc is when it loads.
+  wire signed [SB-1:0] first_abs  = {{(SB - QB + 8){1'b0}}, quotient[QB-1:8]};
+  wire signed [SB-1:0] first_vel  = negative_reg ? -first_abs : first_abs;
+  wire signed [SB-1:0] first_pos  = first_vel * DIV_CLOCKS;
+
+  reg [1:0]           phase_n;
+  reg                 valid_n;
+  reg                 cw_n;
+  reg [TB-1:0]        since_n;
+  reg signed [SB-1:0] pos_n;
+  reg signed [SB-1:0] vel_n;
+  reg signed [SB-1:0] acc_n;
+  reg [9:0]           age_n;
+  reg signed [ZB-1:0] bias_n;
+  reg [5:0]           seq_n;
+  reg signed [EB-1:0] e_n;
+  reg [10:0]          address_n;
+  reg signed [XB-1:0] product0_n;
+  reg signed [XB-1:0] product1_n;
+  reg signed [XB-1:0] product2_n;
+  reg signed [XB-1:0] product3_n;
+  reg signed [RB-1:0] acc_corr_n;
+  reg signed [RB-1:0] vel_corr_n;
+  reg signed [RB-1:0] pos_corr_n;
+  reg                 negative_n;
+  reg                 decaying_n;
+  reg [VB-1:0]        level_n;
+  reg [RB-1:0]        slope_n;
+  reg                 stop;
+  reg                 reversal;
+  reg signed [SB-1:0] d_wide;
+  reg signed [SB-1:0] e_full;
+  reg signed [ZB:0]   z;
+  reg signed [ZB+1:0] z_diff;
+
+  always @(*) begin
+    phase_n    = phase_reg;
+    valid_n    = valid_reg;
+    cw_n       = cw_reg;
+    since_n    = (since_reg == TIMER_MAX) ? since_reg : since_reg + 1'b1;
+    pos_n      = pos_w + vel_w;
+    vel_n      = vel_w + acc_step;
+    acc_n      = acc_w;
+    age_n      = age_reg;
+    bias_n     = bias_reg;
+    seq_n      = (seq_reg != 6'd0) ? seq_reg + 6'd1 : 6'd0;
+    e_n        = e_reg;
+    address_n  = address_reg;
+    product0_n = product0_reg;
+    product1_n = product1_reg;
+    product2_n = product2_reg;
+    product3_n = product3_reg;
+    acc_corr_n = acc_corr_reg;
+    vel_corr_n = vel_corr_reg;
+    pos_corr_n = pos_corr_reg;
+    negative_n = negative_reg;
+    decaying_n = decaying_reg;
+    level_n    = level_reg;
+    slope_n    = slope_reg;
+    div_start  = 1'b0;
+    div_cancel = 1'b0;
+    reversal   = 1'b0;
+    d_wide     = {SB{1'b0}};
+    e_full     = {SB{1'b0}};
+    z          = {(ZB + 1){1'b0}};
+    z_diff     = {(ZB + 2){1'b0}};
+
+    // The update's sequence.
+    if (mul) begin
+      product0_n = {product0_reg[XB-2:0], 1'b0} + (m0[bit_index] ? e_wide : {XB{1'b0}});
+      product1_n = {product1_reg[XB-2:0], 1'b0} + (m1[bit_index] ? e_wide : {XB{1'b0}});
+      product2_n = {product2_reg[XB-2:0], 1'b0} + (m2[bit_index] ? e_wide : {XB{1'b0}});
+      product3_n = {product3_reg[XB-2:0], 1'b0} + (m3[bit_index] ? e_wide : {XB{1'b0}});
+    end
+    case (seq_reg)
+      S_ACC: acc_corr_n = shifted;
+      S_VEL: begin
+        vel_corr_n = shifted + acc_corr_v;
+        pos_corr_n = {shifted[RB-6:0], 5'd0} + acc_corr_p;
+      end
+      S_POS: pos_corr_n = pos_corr_reg + shifted;
+      S_BIAS: begin
+        z      = (shifted > $signed({{(RB - ZB){1'b0}}, Z_TOP})) ? {1'b0, Z_TOP}
+               : (shifted < -$signed({{(RB - ZB){1'b0}}, Z_TOP})) ? -{1'b0, Z_TOP}
+               : shifted[ZB:0];
+        z_diff = {z[ZB], z} - {{2{bias_reg[ZB-1]}}, bias_reg};
+        bias_n = bias_reg + z_diff[ZB+1:2];
+      end
+      S_APPLY: begin
+        pos_n = pos_n + {{(SB - RB){pos_corr_reg[RB-1]}}, pos_corr_reg};
+        vel_n = vel_n + {{(SB - RB){vel_corr_reg[RB-1]}}, vel_corr_reg};
+        acc_n = acc_n + {{(SB - RB){acc_corr_reg[RB-1]}}, acc_corr_reg};
+        seq_n = 6'd0;
+      end
+      default: ;
+    endcase
+
+    // The first velocity, from the division.
+    if (phase_reg == P_DIVIDE && div_done) begin
+      vel_n     = first_vel;
+      pos_n     = first_pos;
+      acc_n     = {SB{1'b0}};
+      phase_n   = P_TRACK;
+      valid_n   = 1'b1;
+      age_n     = 10'd0;
+      bias_n    = {ZB{1'b0}};
+    end
+
+    // An overdue edge: the output decays to 0, a stop.
+    stop = (since_reg == TIMER_MAX) && (phase_reg != P_NONE);
+    if (decaying_reg) begin
+      if ({{(RB - VB){1'b0}}, level_reg} <= slope_reg) stop = 1'b1;
+      level_n = level_reg - slope_reg[VB-1:0];
+    end else if (phase_reg == P_TRACK && seq_reg == 6'd0 && !step && !illegal && overdue) begin
+      decaying_n = 1'b1;
+      level_n    = cw_reg ? shown : -shown;
+      slope_n    = (speed == {(VB - 1){1'b0}} || shifted == {RB{1'b0}}) ? {{(RB - 1){1'b0}}, 1'b1}
+                                                                       : shifted;
+    end
+    if (stop) begin
+      phase_n    = P_NONE;
+      decaying_n = 1'b0;
+      level_n    = {VB{1'b0}};
+      pos_n      = {SB{1'b0}};
+      vel_n      = {SB{1'b0}};
+      acc_n      = {SB{1'b0}};
+      seq_n      = 6'd0;
+      div_cancel = 1'b1;
+    end
+
+    // Events, which win over all the above.
+    if (illegal) begin
+      phase_n    = P_NONE;
+      valid_n    = 1'b0;
+      decaying_n = 1'b0;
+      level_n    = {VB{1'b0}};
+      pos_n      = {SB{1'b0}};
+      vel_n      = {SB{1'b0}};
+      acc_n      = {SB{1'b0}};
+      seq_n      = 6'd0;
+      div_cancel = 1'b1;
+      since_n    = {{(TB - 1){1'b0}}, 1'b1};
+    end else if (step) begin
+      reversal   = (step_cw != cw_reg);
+      d_wide     = reversal ? {SB{1'b0}} : step_cw ? ONE : -ONE;
+      cw_n       = step_cw;
+      since_n    = {{(TB - 1){1'b0}}, 1'b1};
+      decaying_n = 1'b0;
+      level_n    = {VB{1'b0}};
+      if (phase_reg == P_TRACK && !stop) begin
+        pos_n = pos_n - d_wide;
+        if (seq_reg == 6'd0) begin
+          e_full     = (d_wide - predicted) >>> 20;
+          e_n        = (e_full > $signed({{(SB - EB){1'b0}}, E_TOP})) ? E_TOP
+                     : (e_full < -$signed({{(SB - EB){1'b0}}, E_TOP})) ? -E_TOP
+                     : e_full[EB-1:0];
+          address_n  = address;
+          age_n      = (age_used == 10'd1023) ? age_used : age_used + 10'd1;
+          product0_n = {XB{1'b0}};
+          product1_n = {XB{1'b0}};
+          product2_n = {XB{1'b0}};
+          product3_n = {XB{1'b0}};
+          seq_n      = S_READ;
+        end
+      end else if (phase_reg == P_ANCHOR && !reversal && !stop) begin
+        div_start  = 1'b1;
+        negative_n = !step_cw;
+        phase_n    = P_DIVIDE;
+        pos_n      = {SB{1'b0}};
+        vel_n      = {SB{1'b0}};
+        acc_n      = {SB{1'b0}};
+      end else begin
+        phase_n    = P_ANCHOR;
+        pos_n      = {SB{1'b0}};
+        vel_n      = {SB{1'b0}};
+        acc_n      = {SB{1'b0}};
+        seq_n      = 6'd0;
+        div_cancel = 1'b1;
+      end
+    end
+  end
+
+  always @(posedge clk) begin
+    if (seq_reg == S_READ) word_reg <= gains[address_reg];
+    phase_reg    <= phase_n;
+    valid_reg    <= valid_n;
+    velocity_reg <= shown;
+    cw_reg       <= cw_n;
+    since_reg    <= since_n;
+    pos_reg      <= (pos_n > POS_LIMIT) ? POS_LIMIT[PB-1:0]
+                  : (pos_n < -POS_LIMIT) ? -POS_LIMIT[PB-1:0] : pos_n[PB-1:0];
+    vel_reg      <= (vel_n > $signed({{(SB - VB){1'b0}}, V_TOP})) ? V_TOP
+                  : (vel_n < -$signed({{(SB - VB){1'b0}}, V_TOP})) ? -V_TOP : vel_n[VB-1:0];
+    acc_reg      <= (acc_n > $signed({{(SB - AB){1'b0}}, A_TOP})) ? A_TOP
+                  : (acc_n < -$signed({{(SB - AB){1'b0}}, A_TOP})) ? -A_TOP : acc_n[AB-1:0];
+    age_reg      <= age_n;
+    bias_reg     <= bias_n;
+    seq_reg      <= seq_n;
+    e_reg        <= e_n;
+    address_reg  <= address_n;
+    product0_reg <= product0_n;
+    product1_reg <= product1_n;
+    product2_reg <= product2_n;
+    product3_reg <= product3_n;
+    acc_corr_reg <= acc_corr_n;
+    vel_corr_reg <= vel_corr_n;
+    pos_corr_reg <= pos_corr_n;
+    negative_reg <= negative_n;
+    decaying_reg <= decaying_n;
+    level_reg    <= level_n;
+    slope_reg    <= slope_n;
+    if (rst) begin
+      phase_reg    <= P_NONE;
+      valid_reg    <= 1'b0;
+      velocity_reg <= {VB{1'b0}};
+      cw_reg       <= 1'b1;
+      since_reg    <= {TB{1'b0}};
+      pos_reg      <= {PB{1'b0}};
+      vel_reg      <= {VB{1'b0}};
+      acc_reg      <= {AB{1'b0}};
+      age_reg      <= 10'd0;
+      bias_reg     <= {ZB{1'b0}};
+      seq_reg      <= 6'd0;
+      e_reg        <= {EB{1'b0}};
+      address_reg  <= 11'd0;
+      product0_reg <= {XB{1'b0}};
+      product1_reg <= {XB{1'b0}};
+      product2_reg <= {XB{1'b0}};
+      product3_reg <= {XB{1'b0}};
+      acc_corr_reg <= {RB{1'b0}};
+      vel_corr_reg <= {RB{1'b0}};
+      pos_corr_reg <= {RB{1'b0}};
+      negative_reg <= 1'b0;
+      decaying_reg <= 1'b0;
+      level_reg    <= {VB{1'b0}};
+      slope_reg    <= {RB{1'b0}};
+    end
+  end
+
+  assign velocity = {{1{velocity_reg[VB-1]}}, velocity_reg, 8'd0};
+  assign accel    = {{10{acc_reg[AB-1]}}, acc_reg[AB-1:12]};
+  assign valid    = valid_reg;
+
+  wire unused = &{1'b0, quotient[7:0], sh_wide[VB+24:RB], z_diff[1:0]};
+
+endmodule
+
+`resetall

@@ -1,0 +1,244 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Model of rtl/fine/prenc_tracker.v: velocity and acceleration from the sync track's
+edges by a tracking filter whose gains come from a table (prenc.fine.tracker_gains).
+
+Units: quarters and clocks. The state is integer fixed point:
+
+    pos   the predicted position minus the last edge crossed, 2^-40 quarter (+-4)
+    vel   quarters per clock, 2^-40                                         (+-2)
+    acc   quarters per clock^2, 2^-60
+
+Every clock the state moves: pos += vel, vel += acc >> 20. On a step of the decoder
+(edge x crossed; the last edge crossed was x - 1, x + 1 or, after a reversal, x
+itself: d = x - x_last is +1, -1 or 0):
+
+- the innovation e = d - (pos + vel), the measured edge less the predicted position,
+  in 2^-20 quarter (saturated to +-4 quarters); pos is referred to the new edge
+  (pos + vel - d);
+- the gains: a word of the table, at the column of |vel| (2 an octave) and the bin of
+  the filter's age (the updates since it started; each update while a maneuver is
+  seen halves the age first, not below AGE_FLOOR). A maneuver: the innovations'
+  running mean (weight 1/4, in their standard deviations, the table's gz) is above 1;
+- one serial multiplier per gain, a mantissa bit a clock (12 clocks), then one shifter
+  for all four, a gain a clock;
+- the corrections land APPLY = 32 clocks after the step, as if they had at the step
+  and the state had moved since: acc += g2 e, vel += g1 e + 32 (g2 e >> 20),
+  pos += g0 e + 32 g1 e + 496 (g2 e >> 20) (a power of two: shifts, no multiplier).
+  A step while an update is under way is referred (pos) but measures nothing.
+
+The start: the first step (after reset, a stop or an illegal transition) is an anchor;
+the second one gives the velocity, one quarter over the clocks between them (a serial
+division, prenc_divider: its DIV_CLOCKS later, the position moved on by as many clocks);
+the filter starts at age 0 then. A reversal or a step during that division makes the
+step the anchor again.
+
+The output (`velocity`, a clock after the state): the state's velocity, 0 unless it has
+the sign of the last step; once the predicted position is 2 quarters past the last edge
+(an edge overdue), it decays linearly: a level starting at the velocity shown falls by
+about v^2 a clock (|vel| shifted by its own leading one: v^2 to 2 v^2), which reaches 0
+within 2.5 to 3 predicted quarter periods after the edge; there, or after no step for
+2^TIMER_BITS - 1 clocks, the disc has stopped: the velocity reads 0 (valid) and the next
+step is an anchor. An illegal transition drops the velocity (`valid` 0) until the next
+estimate.
+"""
+
+from __future__ import annotations
+
+from . import tracker_gains as tg
+from .velocity import DIV_CLOCKS, FRAC, Divider
+
+POS_BITS = 44              # pos: signed, 2^-40 quarter
+VEL_BITS = 42              # vel: signed, 2^-40 quarter per clock
+ACC_BITS = 52              # acc: signed, 2^-60 quarter per clock^2
+STATE_FRAC = 40
+ACC_SHIFT = 20             # acc's extra fractional bits
+E_BITS = 23                # the innovation: signed, 2^-20 quarter
+PRODUCT_BITS = E_BITS + tg.MANTISSA_BITS
+RESULT_BITS = 52           # a correction from the shifter
+BIAS_BITS = 16             # the innovations' running mean: signed, 2^-8 sigma
+AGE_BITS = 10
+AGE_FLOOR = 4
+APPLY = 32                 # clocks from the step to the corrections
+POS_LIMIT = 4 << STATE_FRAC
+MANEUVER = 1 << 8          # |bias| above 1 sigma
+
+# The sequence after a step (seq): the table's word, 12 multiplier clocks, 4 shifts.
+S_READ, S_MUL, S_ACC, S_VEL, S_POS, S_BIAS = 1, 2, 2 + 12, 3 + 12, 4 + 12, 5 + 12
+
+
+def saturate(value: int, bits: int) -> int:
+    top = (1 << (bits - 1)) - 1
+    return max(-top, min(top, value))
+
+
+def wrap(value: int, bits: int) -> int:
+    """The low `bits` bits as a signed number (what a register of that width keeps)."""
+    value &= (1 << bits) - 1
+    return value - (1 << bits) if value >> (bits - 1) else value
+
+
+def shifter(value: int, s: int) -> int:
+    """(value << PRE_SHIFT) >> s, arithmetic, kept to RESULT_BITS."""
+    return wrap((value << tg.PRE_SHIFT) >> s, RESULT_BITS)
+
+
+class Tracker:
+    """Clock-level model: `clock()` takes one cycle's inputs (the decoder's registered
+    step, step_cw, illegal) and leaves the state as the RTL's registers after that
+    cycle's edge."""
+
+    NONE, ANCHOR, DIVIDE, TRACK = range(4)
+
+    def __init__(self, words: list[int], timer_bits: int = 26):
+        if len(words) != tg.COLUMNS * tg.BINS:
+            raise ValueError(f"the gain table has {len(words)} words, not {tg.COLUMNS * tg.BINS}")
+        if not 12 <= timer_bits <= 32:
+            raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
+        self.words = words
+        self.timer_bits = timer_bits
+        self.timer_max = (1 << timer_bits) - 1
+        self.reset()
+
+    def reset(self) -> None:
+        self.phase = self.NONE
+        self.valid = 0
+        self.velocity = 0       # the output, 2^-40 quarter per clock
+        self.cw = 1             # the last step's direction
+        self.since = 0          # clocks since the last step (saturating)
+        self.pos = 0
+        self.vel = 0
+        self.acc = 0
+        self.age = 0
+        self.bias = 0
+        self.seq = 0
+        self.e = 0
+        self.address = 0
+        self.word = 0
+        self.product = [0, 0, 0, 0]
+        self.acc_corr = 0
+        self.vel_corr = 0
+        self.pos_corr = 0
+        self.negative = 0       # the first velocity's sign
+        self.decaying = 0
+        self.level = 0
+        self.slope = 0
+        self.div = Divider()
+
+    def field(self, i: int) -> tuple[int, int]:
+        """Gain i of the word read: (mantissa, shift)."""
+        f = (self.word >> (i * tg.FIELD_BITS)) & ((1 << tg.FIELD_BITS) - 1)
+        return f & ((1 << tg.MANTISSA_BITS) - 1), f >> tg.MANTISSA_BITS
+
+    def shown(self) -> int:
+        """The velocity the output shows next (from the registers as the cycle began)."""
+        if self.phase != self.TRACK:
+            return 0
+        same = self.vel > 0 if self.cw else self.vel < 0
+        magnitude = abs(self.vel) if same else 0
+        if self.decaying:
+            magnitude = min(magnitude, self.level)
+        return magnitude if self.cw else -magnitude
+
+    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0) -> None:
+        if rst:
+            self.reset()
+            return
+        div_done, quotient = self.div.done, self.div.quotient
+        start = cancel = 0
+        shown = self.shown()
+        seq, phase = self.seq, self.phase
+
+        # Every clock: the state moves; the timer runs.
+        pos_n = self.pos + self.vel
+        vel_n = self.vel + (self.acc >> ACC_SHIFT)
+        acc_n = self.acc
+        since_n = min(self.since + 1, self.timer_max)
+        seq_n = seq + 1 if seq else 0
+
+        # The update's sequence.
+        if seq == S_READ:
+            self.word = self.words[self.address]
+        elif S_MUL <= seq < S_ACC:
+            bit = tg.MANTISSA_BITS - 1 - (seq - S_MUL)
+            for i in range(4):
+                m, _ = self.field(i)
+                self.product[i] = 2 * self.product[i] + (self.e if (m >> bit) & 1 else 0)
+        elif seq == S_ACC:
+            self.acc_corr = shifter(self.product[2], self.field(2)[1])
+        elif seq == S_VEL:
+            r1 = shifter(self.product[1], self.field(1)[1])
+            self.vel_corr = wrap(r1 + (self.acc_corr >> (ACC_SHIFT - 5)), RESULT_BITS)
+            self.pos_corr = wrap((r1 << 5) + ((self.acc_corr * 496) >> ACC_SHIFT), RESULT_BITS)
+        elif seq == S_POS:
+            self.pos_corr = wrap(self.pos_corr + shifter(self.product[0], self.field(0)[1]), RESULT_BITS)
+        elif seq == S_BIAS:
+            z = saturate(shifter(self.product[3], self.field(3)[1]), BIAS_BITS)
+            self.bias += (z - self.bias) >> 2
+        elif seq == APPLY:
+            pos_n += self.pos_corr
+            vel_n += self.vel_corr
+            acc_n += self.acc_corr
+            seq_n = 0
+
+        # The first velocity, from the division.
+        if phase == self.DIVIDE and div_done:
+            v = quotient >> (FRAC - STATE_FRAC)
+            vel_n = -v if self.negative else v
+            pos_n, acc_n = vel_n * DIV_CLOCKS, 0
+            self.phase, self.valid, self.age, self.bias = self.TRACK, 1, 0, 0
+
+        # An overdue edge: the output decays to 0, a stop.
+        stop = self.since == self.timer_max and phase != self.NONE
+        if self.decaying:
+            if self.level <= self.slope:
+                stop = 1
+            self.level -= self.slope
+        elif phase == self.TRACK and seq == 0 and not step and not illegal \
+                and (self.pos if self.cw else -self.pos) >= 2 << STATE_FRAC:
+            speed = abs(self.vel)
+            self.decaying, self.level = 1, abs(shown)
+            self.slope = max(1, shifter(speed, 63 - (speed.bit_length() - 1))) if speed else 1
+
+        if stop:
+            self.phase, self.decaying, self.level = self.NONE, 0, 0
+            pos_n = vel_n = acc_n = 0
+            seq_n, cancel = 0, 1
+
+        # Events, which win over all the above.
+        if illegal:
+            self.phase, self.valid, self.decaying, self.level = self.NONE, 0, 0, 0
+            pos_n = vel_n = acc_n = 0
+            seq_n, cancel, since_n = 0, 1, 1
+        elif step:
+            reversal = step_cw != self.cw
+            d = 0 if reversal else (1 if step_cw else -1)
+            self.cw, since_n = step_cw, 1
+            self.decaying, self.level = 0, 0
+            if phase == self.TRACK and not stop:
+                predicted = self.pos + self.vel
+                pos_n = pos_n - (d << STATE_FRAC)
+                if seq == 0:
+                    e = ((d << STATE_FRAC) - predicted) >> (STATE_FRAC - tg.INNOVATION_FRAC)
+                    self.e = saturate(e, E_BITS)
+                    age = self.age
+                    if abs(self.bias) > MANEUVER:
+                        age = max(age >> 1, AGE_FLOOR)
+                    self.address = tg.column(abs(self.vel)) * tg.BINS + tg.age_bin(age)
+                    self.age = min(age + 1, tg.AGE_MAX)
+                    self.product = [0, 0, 0, 0]
+                    seq_n = S_READ
+            elif phase == self.ANCHOR and not reversal and not stop:
+                start, self.negative = 1, int(not step_cw)
+                self.phase = self.DIVIDE
+                pos_n = vel_n = acc_n = 0
+            else:   # an anchor: the first step, a reversal, a stop, a step during the division
+                self.phase = self.ANCHOR
+                pos_n = vel_n = acc_n = 0
+                seq_n, cancel = 0, 1
+
+        self.div.clock(start, 1 << FRAC, self.since, cancel)
+        self.velocity = shown
+        self.pos = max(-POS_LIMIT, min(POS_LIMIT, pos_n))
+        self.vel = saturate(vel_n, VEL_BITS)
+        self.acc = saturate(acc_n, ACC_BITS)
+        self.since, self.seq = since_n, seq_n

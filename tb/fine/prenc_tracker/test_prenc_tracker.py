@@ -1,0 +1,115 @@
+# SPDX-License-Identifier: Apache-2.0
+"""prenc_tracker (with prenc_divider) against its model, prenc.fine.tracker.Tracker,
+clock by clock.
+
+The gain table is prenc.fine.tracker_gains's for N = 6 at 100 kHz (600 rpm is 0.0256
+quarter per clock), so that the stimulus's speeds cross most of the table's columns.
+The stimulus is what the core gives the block on a disc that starts at rest, turns
+steadily long enough for the filter's age to reach the table's last bins, changes
+speed at once (a maneuver: the age is halved), turns faster than an update takes (steps
+that only refer the position), reverses smoothly and at once, wanders, stops (an edge
+overdue: the decay to 0) and rests, with a lone step in the rest (an anchor and no
+second step: the time-out); a few illegal transitions
+(missed states) are mixed in. Each run draws its stimulus; PRENC_TRACKER_SEED=<seed>
+replays the draw a failure names. The test counts what it must have exercised.
+"""
+
+from __future__ import annotations
+
+import os
+
+import numpy as np
+import pytest
+import cocotb
+
+from common import clock_and_check, rng, start_clock_and_reset
+from prenc.fine import tracker_gains
+from prenc.fine.tracker import Tracker
+from prenc.virtual.fine_bench import sync_stream
+from prenc.virtual.trajectory import Trajectory
+from runner import SIM_BUILD, SIMULATORS, run
+
+TOPLEVEL = "prenc_tracker"
+N, CLK_HZ, TIMER_BITS = 6, 1e5, 12
+RESET_CLOCKS = 3
+LONE_STEP = 42_800 + 1000      # in the rest, after the stop: an anchor, then the time-out
+REST = 1000 + (1 << TIMER_BITS) + 1000
+
+
+def gain_file() -> str:
+    path = SIM_BUILD / "roms" / f"prenc_tracker_gains_n{N}_{int(CLK_HZ)}hz.hex"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tracker_gains.write(path, N, CLK_HZ, tracker_gains.SIGMA["ideal"])
+    return str(path)
+
+
+def stimulus(seed: int) -> tuple[dict[str, np.ndarray], int]:
+    """The core's outputs to the block, clock by clock (clk_hz = 1: slots per clock)."""
+    r = np.random.default_rng(seed)
+    traj = (Trajectory(clk_hz=1, start=10.4)
+            .rest(300)
+            .accelerate(0.0075, 2000)          # from rest
+            .constant(0.0075, 18000)           # 540 edges: the last bins of the age
+            .constant(0.012, 3000)             # a speed change at once: a maneuver
+            .accelerate(0.06, 1500)            # faster than an update: steps that only refer
+            .constant(0.06, 1000)
+            .accelerate(-0.004, 6000)          # a smooth reversal
+            .constant(0.004, 3000)             # a reversal at once
+            .random_walk(6000, max_speed=0.02, seed=seed, knot_seconds=600)
+            .constant(0.002, 2000)
+            .rest(REST)                        # a stop (an overdue edge); a lone step (below)
+            .constant(-0.001, 6000))           # a crawl
+    sync = sync_stream(traj.theta, None, n=N)
+    total = len(traj.theta)
+    illegal = np.zeros(total, dtype=np.int8)
+    for c in r.choice(np.r_[30_000:LONE_STEP - 1000, LONE_STEP + 5000:total - 10], size=3,
+                      replace=False):
+        illegal[c] = 1
+    step = np.where(illegal == 1, 0, sync.step)
+    assert not sync.step[LONE_STEP - 1000:LONE_STEP + (1 << TIMER_BITS) + 1].any()
+    step[LONE_STEP] = 1
+    return {"step": step, "step_cw": sync.cw, "illegal": illegal}, total
+
+
+@cocotb.test()
+async def matches_the_model_clock_by_clock(dut):
+    seed = int(os.environ.get("PRENC_TRACKER_SEED", rng().randrange(1 << 30)))  # replay a draw
+    inputs, total = stimulus(seed)
+    model = Tracker(tracker_gains.read(os.environ["PRENC_GAIN_FILE"]), timer_bits=TIMER_BITS)
+    names = ("step", "step_cw", "illegal")
+    await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
+    seen = {"updates": 0, "referred only": 0, "maneuvers": 0, "decays": 0, "stops": 0,
+            "time-outs": 0, "first velocities": 0}
+    columns, bins = set(), set()
+    data = [inputs[k].tolist() for k in names]
+    for c in range(total):
+        now = dict(zip(names, (col[c] for col in data)))
+        before = (model.phase, model.seq, model.decaying, model.bias, model.since)
+        model.clock(now["step"], now["step_cw"], now["illegal"])
+        phase, seq, decaying, bias, since = before
+        if now["step"] and phase == model.TRACK:
+            if seq == 0 and model.seq:
+                seen["updates"] += 1
+                columns.add(model.address // tracker_gains.BINS)
+                bins.add(model.address % tracker_gains.BINS)
+                seen["maneuvers"] += int(abs(bias) > 256)
+            elif seq:
+                seen["referred only"] += 1
+        seen["decays"] += int(model.decaying and not decaying)
+        seen["stops"] += int(phase == model.TRACK and model.phase == model.NONE and not now["illegal"])
+        seen["time-outs"] += int(since == model.timer_max and phase != model.NONE)
+        seen["first velocities"] += int(phase == model.DIVIDE and model.phase == model.TRACK)
+        expected = {"velocity": (model.velocity << 8) & ((1 << 51) - 1),
+                    "accel": (model.acc >> 12) & ((1 << 50) - 1), "valid": model.valid}
+        await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
+    dut._log.info("seed %d: %d clocks, %s, columns %s, age bins %s", seed, total, seen,
+                  sorted(columns), sorted(bins))
+    assert all(v > 0 for v in seen.values()), seen
+    assert max(bins) >= 36 and len(columns) >= 8, (sorted(columns), sorted(bins))
+
+
+@pytest.mark.parametrize("simulator", SIMULATORS)
+def test_prenc_tracker(simulator):
+    path = gain_file()
+    run(__file__, TOPLEVEL, simulator, parameters={"TIMER_BITS": TIMER_BITS, "GAIN_FILE": path},
+        extra_env={"PRENC_GAIN_FILE": path})
