@@ -397,7 +397,7 @@ def fine_section() -> bool:
     """Section 9: fine position and velocity beside the baselines; the goals of issue 37."""
     from prenc.virtual import fine_bench as fb
 
-    ours = ("ours", "quarter", "mean")
+    ours = ("ours", "quarter", "mean", "tracker")
     names = ours + ("period", "mixed", "count")
     print(f"\n9. Fine position and velocity: N = {fb.N}, {fb.CLK_HZ / 1e6:.0f} MHz, FILTER = {fb.FILTER}, "
           f"FINE_BITS = {fb.FINE_BITS}, lookahead {fb.LOOKAHEAD_HALVES / 2} clocks")
@@ -406,11 +406,13 @@ def fine_section() -> bool:
     print(f"   ours: the default, full-cycle windows of at least WINDOW = {fb.WINDOW} clocks (any disc);")
     print(f"   quarter: QUARTER_WINDOWS = 1, windows between any edges of at least {fb.QUARTER_WINDOW} clocks")
     print("   (for a disc whose edges are accurate, or calibrated: section 10); mean: ACCEL_FIT = 0, the")
-    print("   default's windows without the fit, the mean of the last two (for a small FPGA).")
+    print("   default's windows without the fit, the mean of the last two (for a small FPGA); tracker: TRACKER = 1,")
+    print("   a tracking filter whose gains come from a table (`prenc gains`, the disc's: sigma 0.01 quarter ideal,")
+    print("   0.15 printed).")
     print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
     print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
     print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")
-    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean at least as good as")
+    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean / tracker at least as good as")
     print("   every baseline (RMS; equal within 1 % counts), in position (p), velocity (v), both (pv) or neither (-).")
     failed = False
     results: dict[str, dict[str, dict]] = {}
@@ -455,6 +457,7 @@ def fine_section() -> bool:
     ideal = results["ideal disc"]
     steady = [f"{r} rpm" for r in fb.STEADY_RPM if r >= 10]
     for mine, title in (("quarter", "quarter windows (an accurate disc's configuration)"),
+                        ("tracker", "TRACKER = 1, the tracking filter"),
                         ("ours", "the default, full-cycle windows"),
                         ("mean", "ACCEL_FIT = 0, the mean of two windows (a small FPGA's)")):
         # The goals count for the configuration meant for an ideal disc; the default's
@@ -494,16 +497,22 @@ def cell_counts(result, family: str) -> str:
 
 
 def fine_logic_rows() -> list[str]:
-    """What the configurations cost: prenc_fine with QUARTER_WINDOWS 0 and 1, and with
-    ACCEL_FIT 0 (Yosys, iCE40 and ECP5 cells)."""
+    """What the configurations cost: prenc_fine with QUARTER_WINDOWS 0 and 1, with
+    ACCEL_FIT 0 and with TRACKER 1 (Yosys, iCE40 and ECP5 cells)."""
     sys.path.insert(0, str(REPO / "tb"))
     from yosys import synthesize
 
+    from prenc.fine import tracker_gains
+
+    gains = REPO / "sim_build" / "roms" / "prenc_tracker_gains_n10_30mhz_ideal.hex"
+    gains.parent.mkdir(parents=True, exist_ok=True)
+    tracker_gains.write(gains, 10, 30e6)
     rows = []
     for family in ("ice40", "ecp5"):
         cells = []
         for label, extra in (("QUARTER_WINDOWS = 0", {"QUARTER_WINDOWS": 0}),
-                             ("QUARTER_WINDOWS = 1", {"QUARTER_WINDOWS": 1}), ("ACCEL_FIT = 0", {"ACCEL_FIT": 0})):
+                             ("QUARTER_WINDOWS = 1", {"QUARTER_WINDOWS": 1}), ("ACCEL_FIT = 0", {"ACCEL_FIT": 0}),
+                             ("TRACKER = 1", {"TRACKER": 1, "GAIN_FILE": str(gains)})):
             try:
                 result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, **extra})
                 cells.append(f"{label}: {cell_counts(result, family)}")

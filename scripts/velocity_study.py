@@ -201,7 +201,7 @@ def tracker_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
     total = len(sync.step)
     out = np.zeros(total)
     step, cw = sync.step.tolist(), sync.cw.tolist()
-    scale = 2.0 ** -40
+    scale = 2.0 ** -48
     for c in range(total):
         model.clock(step[c], cw[c])
         out[c] = model.velocity * scale

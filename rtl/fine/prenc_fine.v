@@ -29,6 +29,11 @@
 // Parameters
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
 //   WINDOW, TIMER_BITS, QUARTER_WINDOWS, ACCEL_FIT   prenc_velocity's (2048, 26, 0, 1)
+//   TRACKER    1: the velocity from prenc_tracker instead (a tracking filter with a gain
+//              table: GAIN_FILE, from `python -m prenc gains`; TIMER_BITS is its too,
+//              WINDOW, QUARTER_WINDOWS, ACCEL_FIT unused; with CAL = 1 the table's
+//              corrections go to the fine position only); 0: prenc_velocity (default)
+//   GAIN_FILE  with TRACKER = 1: the gain table ($readmemh)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
@@ -52,6 +57,8 @@ module prenc_fine #(
   parameter integer TIMER_BITS       = 26,
   parameter integer QUARTER_WINDOWS  = 0,
   parameter integer ACCEL_FIT        = 1,
+  parameter integer TRACKER          = 0,
+  parameter         GAIN_FILE        = "prenc_gains_n10_30mhz.hex",
   parameter integer ENABLE           = 1,
   parameter integer CAL              = 0,
   parameter         CAL_FILE         = ""
@@ -88,6 +95,14 @@ module prenc_fine #(
     if (ENABLE == 0 && FINE_BITS != 0) begin : g_bad_fine_bits
       initial $display("ERROR: %m: parameter FINE_BITS = %0d needs ENABLE = 1", FINE_BITS);
       prenc_fine_parameter_FINE_BITS_needs_ENABLE_1 u_stop ();
+    end
+    if (TRACKER != 0 && TRACKER != 1) begin : g_bad_tracker
+      initial $display("ERROR: %m: parameter TRACKER = %0d must be 0 or 1", TRACKER);
+      prenc_fine_parameter_TRACKER_must_be_0_or_1 u_stop ();
+    end
+    if (TRACKER == 1 && ENABLE != 1) begin : g_bad_tracker_enable
+      initial $display("ERROR: %m: parameter TRACKER = 1 needs ENABLE = 1");
+      prenc_fine_parameter_TRACKER_needs_ENABLE_1 u_stop ();
     end
     if (CAL != 0 && CAL != 1) begin : g_bad_cal
       initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
@@ -207,24 +222,41 @@ module prenc_fine #(
         wire unused_cal = &{1'b0, cal_write, cal_address, cal_data};
       end
 
-      prenc_velocity #(
-        .WINDOW     (WINDOW),
-        .TIMER_BITS (TIMER_BITS),
-        .CAL        (CAL),
-        .QUARTER_WINDOWS (QUARTER_WINDOWS),
-        .ACCEL_FIT  (ACCEL_FIT)
-      ) u_velocity (
-        .clk      (clk),
-        .rst      (rst),
-        .step     (v_step),
-        .step_cw  (v_step_cw),
-        .illegal  (v_illegal),
-        .c_lo     (v_c_lo),
-        .c_hi     (v_c_hi),
-        .velocity (velocity),
-        .accel    (accel),
-        .valid    (velocity_valid)
-      );
+      if (TRACKER == 1) begin : g_tracker
+        prenc_tracker #(
+          .TIMER_BITS (TIMER_BITS),
+          .GAIN_FILE  (GAIN_FILE)
+        ) u_tracker (
+          .clk      (clk),
+          .rst      (rst),
+          .step     (v_step),
+          .step_cw  (v_step_cw),
+          .illegal  (v_illegal),
+          .velocity (velocity),
+          .accel    (accel),
+          .valid    (velocity_valid)
+        );
+        wire unused_tracker = &{1'b0, v_c_lo, v_c_hi};
+      end else begin : g_velocity
+        prenc_velocity #(
+          .WINDOW     (WINDOW),
+          .TIMER_BITS (TIMER_BITS),
+          .CAL        (CAL),
+          .QUARTER_WINDOWS (QUARTER_WINDOWS),
+          .ACCEL_FIT  (ACCEL_FIT)
+        ) u_velocity (
+          .clk      (clk),
+          .rst      (rst),
+          .step     (v_step),
+          .step_cw  (v_step_cw),
+          .illegal  (v_illegal),
+          .c_lo     (v_c_lo),
+          .c_hi     (v_c_hi),
+          .velocity (velocity),
+          .accel    (accel),
+          .valid    (velocity_valid)
+        );
+      end
 
       prenc_fine_position #(
         .N                (N),

@@ -18,12 +18,12 @@
 // - four serial multipliers, a mantissa bit a clock (12 clocks), then one shifter, a
 //   gain a clock; the corrections land APPLY = 32 clocks after the step as if they had
 //   at the step: acc += g2 e, vel += g1 e + 32 (g2 e >>> 20),
-//   pos += g0 e + 32 g1 e + 496 (g2 e >>> 20). A step while an update is under way
+//   pos += g0 e + 32 g1 e + 512 (g2 e >>> 20). A step while an update is under way
 //   is referred but measures nothing.
 // - The start: the first step (after reset, a stop, an illegal transition) is an
 //   anchor; the second gives the velocity, a quarter over the clocks between them
-//   (prenc_divider: DIV_CLOCKS later, the position moved on by as many clocks), and
-//   the filter starts at age 0. A reversal or a step during the division is an anchor.
+//   (prenc_divider), LOAD = 64 clocks later, the position moved on by as many clocks, and
+//   the filter starts at age 0. Steps before that are referred; a reversal is an anchor.
 // - The output: vel, 0 unless it has the last step's sign; once pos is 2 quarters past
 //   the last edge (an edge overdue), a level from the velocity shown falls by about
 //   v^2 a clock (|vel| shifted by its leading one), reaching 0 within 2.5 to 3
@@ -38,7 +38,8 @@
 // Parameters
 //   TIMER_BITS   width of the clocks counted, 12..32 (26: 2.2 s at 30 MHz)
 //   GAIN_FILE    the gain table ($readmemh, 1,280 words of 72 bits: prenc.fine.
-//                tracker_gains's format, `python -m prenc gains`); required
+//                tracker_gains's format, `prenc gains`, for the disc's N and edge
+//                error and this clock); a missing or short file stops a simulation
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs
@@ -51,7 +52,7 @@
 
 module prenc_tracker #(
   parameter integer TIMER_BITS = 26,
-  parameter         GAIN_FILE  = ""
+  parameter         GAIN_FILE  = "prenc_gains_n10_30mhz.hex"
 ) (
   input  wire        clk,
   input  wire        rst,
@@ -83,23 +84,28 @@ module prenc_tracker #(
   localparam integer XB    = EB + MB;   // a product
   localparam integer RB    = 52;   // a correction
   localparam integer ZB    = 16;   // bias
-  localparam integer SB    = 54;   // the state's sums
+  localparam integer CB    = 46;   // the position's and the velocity's corrections
+  localparam integer SB    = 48;   // the position's and the velocity's sums
+  localparam integer AS    = AB + 1;   // the acceleration's sum
   localparam integer WB    = 72;   // a table word
   localparam integer BINS  = 40;
   localparam integer DEPTH = 32 * BINS;
   localparam integer QB    = 49;   // the divider's quotient (48 fractional bits)
   localparam integer DIV_CLOCKS = QB + 2;
+  localparam integer LOAD       = 64;   // clocks from the second step to the first velocity
+
+  generate
+    if (DIV_CLOCKS >= LOAD) begin : g_bad_load   // the division must be done at LOAD
+      prenc_tracker_DIV_CLOCKS_must_be_below_LOAD u_stop ();
+    end
+  endgenerate
 
   localparam [1:0] P_NONE = 2'd0, P_ANCHOR = 2'd1, P_DIVIDE = 2'd2, P_TRACK = 2'd3;
   localparam [5:0] S_READ = 6'd1, S_MUL = 6'd2, S_ACC = 6'd14, S_VEL = 6'd15, S_POS = 6'd16,
                    S_BIAS = 6'd17, S_APPLY = 6'd32;
 
-  localparam signed [SB-1:0] POS_LIMIT = {{(SB - 43){1'b0}}, 1'b1, 42'd0};   // 4 quarters
   localparam signed [SB-1:0] ONE       = {{(SB - 41){1'b0}}, 1'b1, 40'd0};   // a quarter
   localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
-  localparam signed [AB-1:0] A_TOP     = {1'b0, {(AB - 1){1'b1}}};
-  localparam signed [EB-1:0] E_TOP     = {1'b0, {(EB - 1){1'b1}}};
-  localparam signed [ZB-1:0] Z_TOP     = {1'b0, {(ZB - 1){1'b1}}};
   localparam [TB-1:0]        TIMER_MAX = {TB{1'b1}};
 
   // The gain table.
@@ -138,9 +144,10 @@ module prenc_tracker #(
   reg signed [XB-1:0] product2_reg;
   reg signed [XB-1:0] product3_reg;
   reg signed [RB-1:0] acc_corr_reg;
-  reg signed [RB-1:0] vel_corr_reg;
-  reg signed [RB-1:0] pos_corr_reg;
+  reg signed [CB-1:0] vel_corr_reg;
+  reg signed [CB-1:0] pos_corr_reg;
   reg                 negative_reg;
+  reg [6:0]           dividing_reg;   // clocks since the division started (wrapping)
   reg                 decaying_reg;
   reg [VB-1:0]        level_reg;
   reg [RB-1:0]        slope_reg;
@@ -217,11 +224,26 @@ module prenc_tracker #(
   reg [5:0]           sh_amount;
   always @(*) begin
     case (seq_reg)
-      S_ACC:   begin sh_value = {{(VB + 1 - XB){product2_reg[XB-1]}}, product2_reg}; sh_amount = s2; end
-      S_VEL:   begin sh_value = {{(VB + 1 - XB){product1_reg[XB-1]}}, product1_reg}; sh_amount = s1; end
-      S_POS:   begin sh_value = {{(VB + 1 - XB){product0_reg[XB-1]}}, product0_reg}; sh_amount = s0; end
-      S_BIAS:  begin sh_value = {{(VB + 1 - XB){product3_reg[XB-1]}}, product3_reg}; sh_amount = s3; end
-      default: begin sh_value = {2'b00, speed}; sh_amount = 6'd63 - lead_one; end
+      S_ACC: begin
+        sh_value  = {{(VB + 1 - XB){product2_reg[XB-1]}}, product2_reg};
+        sh_amount = s2;
+      end
+      S_VEL: begin
+        sh_value  = {{(VB + 1 - XB){product1_reg[XB-1]}}, product1_reg};
+        sh_amount = s1;
+      end
+      S_POS: begin
+        sh_value  = {{(VB + 1 - XB){product0_reg[XB-1]}}, product0_reg};
+        sh_amount = s0;
+      end
+      S_BIAS: begin
+        sh_value  = {{(VB + 1 - XB){product3_reg[XB-1]}}, product3_reg};
+        sh_amount = s3;
+      end
+      default: begin   // the decay's slope, |vel| x 2^(lead_one + 1 - 40): v^2 to 2 v^2
+        sh_value  = {2'b00, speed};
+        sh_amount = 6'd63 - lead_one;
+      end
     endcase
   end
   wire signed [VB+24:0] sh_wide = $signed({sh_value, 24'd0}) >>> sh_amount;
@@ -234,21 +256,53 @@ module prenc_tracker #(
   wire signed [VB-1:0] shown = (phase_reg != P_TRACK) ? {VB{1'b0}}
                                : cw_reg ? $signed(magnitude) : -$signed(magnitude);
 
-  // The state's sums (SB bits), saturated when registered.
+  // The state's sums, saturated when registered (pos and acc to their two's complement
+  // range, vel symmetrically, by their top bits: no compare).
   wire signed [SB-1:0] pos_w      = {{(SB - PB){pos_reg[PB-1]}}, pos_reg};
   wire signed [SB-1:0] vel_w      = {{(SB - VB){vel_reg[VB-1]}}, vel_reg};
   wire signed [SB-1:0] acc_step   = {{(SB - AB + 20){acc_reg[AB-1]}}, acc_reg[AB-1:20]};
-  wire signed [SB-1:0] acc_w      = {{(SB - AB){acc_reg[AB-1]}}, acc_reg};
+  wire signed [AS-1:0] acc_w      = {acc_reg[AB-1], acc_reg};
   wire signed [SB-1:0] predicted  = pos_w + vel_w;
-  wire signed [SB-1:0] travel     = cw_reg ? pos_w : -pos_w;
-  wire                 overdue    = travel >= (ONE + ONE);
-  wire signed [RB-1:0] acc_corr_v = {{15{acc_corr_reg[RB-1]}}, acc_corr_reg[RB-1:15]};
-  wire signed [RB+9:0] acc_496    = acc_corr_reg * 10'sd496;
-  wire signed [RB-1:0] acc_corr_p = {{10{acc_496[RB+9]}}, acc_496[RB+9:20]};
-  // The first velocity, 2^48 / clocks >> 8, and where the disc is when it loads.
+  // An edge overdue: pos 2 quarters or more past the last edge, the last step's way.
+  localparam signed [PB-1:0] TWO = {{(PB - 42){1'b0}}, 1'b1, 41'd0};
+  wire                 overdue    = cw_reg ? (!pos_reg[PB-1] && (pos_reg[PB-2:41] != 2'b00))
+                                           : (pos_reg <= -TWO);
+  // The acceleration's correction over APPLY = 32 clocks: to the velocity 32 (g2 e >>> 20),
+  // to the position 512 (g2 e >>> 20) (32 x 32 / 2 for 32 x 31 / 2).
+  wire                 acc_sign   = acc_corr_reg[RB-1];
+  wire signed [CB-1:0] acc_corr_v = {{(CB - RB + 15){acc_sign}}, acc_corr_reg[RB-1:15]};
+  wire signed [CB-1:0] acc_corr_p = {{(CB - RB + 11){acc_sign}}, acc_corr_reg[RB-1:11]};
+  // The first velocity, 2^48 / clocks >> 8, and where the disc is when it loads: LOAD = 64
+  // clocks after the step (the division is done after DIV_CLOCKS).
   wire signed [SB-1:0] first_abs  = {{(SB - QB + 8){1'b0}}, quotient[QB-1:8]};
   wire signed [SB-1:0] first_vel  = negative_reg ? -first_abs : first_abs;
-  wire signed [SB-1:0] first_pos  = first_vel * DIV_CLOCKS;
+  wire signed [SB-1:0] first_pos  = pos_w + {first_vel[SB-7:0], 6'd0};
+  // The saturations.
+  wire                 pos_fits   = (pos_n[SB-1:PB-1] == {(SB - PB + 1){1'b0}}) ||
+                                    (pos_n[SB-1:PB-1] == {(SB - PB + 1){1'b1}});
+  wire                 vel_fits   = ((vel_n[SB-1:VB-1] == {(SB - VB + 1){1'b0}}) ||
+                                     (vel_n[SB-1:VB-1] == {(SB - VB + 1){1'b1}})) &&
+                                    (vel_n[VB-1:0] != {1'b1, {(VB - 1){1'b0}}});
+  wire                 acc_fits   = (acc_n[AS-1] == acc_n[AB-1]);
+  wire signed [PB-1:0] pos_sat    = pos_fits ? pos_n[PB-1:0]
+                                             : {pos_n[SB-1], {(PB - 1){!pos_n[SB-1]}}};
+  wire signed [VB-1:0] vel_sat    = vel_fits ? vel_n[VB-1:0] : vel_n[SB-1] ? -V_TOP : V_TOP;
+  wire signed [AB-1:0] acc_sat    = acc_fits ? acc_n[AB-1:0]
+                                             : {acc_n[AS-1], {(AB - 1){!acc_n[AS-1]}}};
+  // A step's edge less the last one (+-1 quarter, or 0 after a reversal); the innovation,
+  // and the normalized innovation, saturated likewise.
+  wire                 reversal   = (step_cw != cw_reg);
+  wire signed [SB-1:0] d_wide     = reversal ? {SB{1'b0}} : step_cw ? ONE : -ONE;
+  wire signed [SB-1:0] e_sum      = d_wide - predicted;
+  wire                 e_fits     = (e_sum[SB-1:EB+19] == {(SB - EB - 19){1'b0}}) ||
+                                    (e_sum[SB-1:EB+19] == {(SB - EB - 19){1'b1}});
+  wire signed [EB-1:0] e_sat      = e_fits ? e_sum[EB+19:20]
+                                           : {e_sum[SB-1], {(EB - 1){!e_sum[SB-1]}}};
+  wire                 z_fits     = (shifted[RB-1:ZB-1] == {(RB - ZB + 1){1'b0}}) ||
+                                    (shifted[RB-1:ZB-1] == {(RB - ZB + 1){1'b1}});
+  wire signed [ZB-1:0] z          = z_fits ? shifted[ZB-1:0]
+                                           : {shifted[RB-1], {(ZB - 1){!shifted[RB-1]}}};
+  wire signed [ZB+1:0] z_diff     = {{2{z[ZB-1]}}, z} - {{2{bias_reg[ZB-1]}}, bias_reg};
 
   reg [1:0]           phase_n;
   reg                 valid_n;
@@ -256,7 +310,7 @@ module prenc_tracker #(
   reg [TB-1:0]        since_n;
   reg signed [SB-1:0] pos_n;
   reg signed [SB-1:0] vel_n;
-  reg signed [SB-1:0] acc_n;
+  reg signed [AS-1:0] acc_n;
   reg [9:0]           age_n;
   reg signed [ZB-1:0] bias_n;
   reg [5:0]           seq_n;
@@ -267,18 +321,14 @@ module prenc_tracker #(
   reg signed [XB-1:0] product2_n;
   reg signed [XB-1:0] product3_n;
   reg signed [RB-1:0] acc_corr_n;
-  reg signed [RB-1:0] vel_corr_n;
-  reg signed [RB-1:0] pos_corr_n;
+  reg signed [CB-1:0] vel_corr_n;
+  reg signed [CB-1:0] pos_corr_n;
   reg                 negative_n;
+  reg [6:0]           dividing_n;
   reg                 decaying_n;
   reg [VB-1:0]        level_n;
   reg [RB-1:0]        slope_n;
   reg                 stop;
-  reg                 reversal;
-  reg signed [SB-1:0] d_wide;
-  reg signed [SB-1:0] e_full;
-  reg signed [ZB:0]   z;
-  reg signed [ZB+1:0] z_diff;
 
   always @(*) begin
     phase_n    = phase_reg;
@@ -301,16 +351,12 @@ module prenc_tracker #(
     vel_corr_n = vel_corr_reg;
     pos_corr_n = pos_corr_reg;
     negative_n = negative_reg;
+    dividing_n = dividing_reg + 7'd1;
     decaying_n = decaying_reg;
     level_n    = level_reg;
     slope_n    = slope_reg;
     div_start  = 1'b0;
     div_cancel = 1'b0;
-    reversal   = 1'b0;
-    d_wide     = {SB{1'b0}};
-    e_full     = {SB{1'b0}};
-    z          = {(ZB + 1){1'b0}};
-    z_diff     = {(ZB + 2){1'b0}};
 
     // The update's sequence.
     if (mul) begin
@@ -322,31 +368,25 @@ module prenc_tracker #(
     case (seq_reg)
       S_ACC: acc_corr_n = shifted;
       S_VEL: begin
-        vel_corr_n = shifted + acc_corr_v;
-        pos_corr_n = {shifted[RB-6:0], 5'd0} + acc_corr_p;
+        vel_corr_n = shifted[CB-1:0] + acc_corr_v;
+        pos_corr_n = {shifted[CB-6:0], 5'd0} + acc_corr_p;
       end
-      S_POS: pos_corr_n = pos_corr_reg + shifted;
-      S_BIAS: begin
-        z      = (shifted > $signed({{(RB - ZB){1'b0}}, Z_TOP})) ? {1'b0, Z_TOP}
-               : (shifted < -$signed({{(RB - ZB){1'b0}}, Z_TOP})) ? -{1'b0, Z_TOP}
-               : shifted[ZB:0];
-        z_diff = {z[ZB], z} - {{2{bias_reg[ZB-1]}}, bias_reg};
-        bias_n = bias_reg + z_diff[ZB+1:2];
-      end
+      S_POS: pos_corr_n = pos_corr_reg + shifted[CB-1:0];
+      S_BIAS: bias_n = bias_reg + z_diff[ZB+1:2];
       S_APPLY: begin
-        pos_n = pos_n + {{(SB - RB){pos_corr_reg[RB-1]}}, pos_corr_reg};
-        vel_n = vel_n + {{(SB - RB){vel_corr_reg[RB-1]}}, vel_corr_reg};
-        acc_n = acc_n + {{(SB - RB){acc_corr_reg[RB-1]}}, acc_corr_reg};
+        pos_n = pos_n + {{(SB - CB){pos_corr_reg[CB-1]}}, pos_corr_reg};
+        vel_n = vel_n + {{(SB - CB){vel_corr_reg[CB-1]}}, vel_corr_reg};
+        acc_n = acc_n + {acc_corr_reg[RB-1], acc_corr_reg};
         seq_n = 6'd0;
       end
       default: ;
     endcase
 
     // The first velocity, from the division.
-    if (phase_reg == P_DIVIDE && div_done) begin
+    if (phase_reg == P_DIVIDE && dividing_reg == LOAD[6:0]) begin
       vel_n     = first_vel;
       pos_n     = first_pos;
-      acc_n     = {SB{1'b0}};
+      acc_n     = {AS{1'b0}};
       phase_n   = P_TRACK;
       valid_n   = 1'b1;
       age_n     = 10'd0;
@@ -370,7 +410,7 @@ module prenc_tracker #(
       level_n    = {VB{1'b0}};
       pos_n      = {SB{1'b0}};
       vel_n      = {SB{1'b0}};
-      acc_n      = {SB{1'b0}};
+      acc_n      = {AS{1'b0}};
       seq_n      = 6'd0;
       div_cancel = 1'b1;
     end
@@ -383,13 +423,11 @@ module prenc_tracker #(
       level_n    = {VB{1'b0}};
       pos_n      = {SB{1'b0}};
       vel_n      = {SB{1'b0}};
-      acc_n      = {SB{1'b0}};
+      acc_n      = {AS{1'b0}};
       seq_n      = 6'd0;
       div_cancel = 1'b1;
       since_n    = {{(TB - 1){1'b0}}, 1'b1};
     end else if (step) begin
-      reversal   = (step_cw != cw_reg);
-      d_wide     = reversal ? {SB{1'b0}} : step_cw ? ONE : -ONE;
       cw_n       = step_cw;
       since_n    = {{(TB - 1){1'b0}}, 1'b1};
       decaying_n = 1'b0;
@@ -397,10 +435,7 @@ module prenc_tracker #(
       if (phase_reg == P_TRACK && !stop) begin
         pos_n = pos_n - d_wide;
         if (seq_reg == 6'd0) begin
-          e_full     = (d_wide - predicted) >>> 20;
-          e_n        = (e_full > $signed({{(SB - EB){1'b0}}, E_TOP})) ? E_TOP
-                     : (e_full < -$signed({{(SB - EB){1'b0}}, E_TOP})) ? -E_TOP
-                     : e_full[EB-1:0];
+          e_n        = e_sat;
           address_n  = address;
           age_n      = (age_used == 10'd1023) ? age_used : age_used + 10'd1;
           product0_n = {XB{1'b0}};
@@ -412,15 +447,18 @@ module prenc_tracker #(
       end else if (phase_reg == P_ANCHOR && !reversal && !stop) begin
         div_start  = 1'b1;
         negative_n = !step_cw;
+        dividing_n = 7'd1;
         phase_n    = P_DIVIDE;
         pos_n      = {SB{1'b0}};
         vel_n      = {SB{1'b0}};
-        acc_n      = {SB{1'b0}};
+        acc_n      = {AS{1'b0}};
+      end else if (phase_reg == P_DIVIDE && !reversal && !stop) begin
+        pos_n      = pos_n - d_wide;   // referred, as the velocity is not known yet
       end else begin
         phase_n    = P_ANCHOR;
         pos_n      = {SB{1'b0}};
         vel_n      = {SB{1'b0}};
-        acc_n      = {SB{1'b0}};
+        acc_n      = {AS{1'b0}};
         seq_n      = 6'd0;
         div_cancel = 1'b1;
       end
@@ -434,12 +472,9 @@ module prenc_tracker #(
     velocity_reg <= shown;
     cw_reg       <= cw_n;
     since_reg    <= since_n;
-    pos_reg      <= (pos_n > POS_LIMIT) ? POS_LIMIT[PB-1:0]
-                  : (pos_n < -POS_LIMIT) ? -POS_LIMIT[PB-1:0] : pos_n[PB-1:0];
-    vel_reg      <= (vel_n > $signed({{(SB - VB){1'b0}}, V_TOP})) ? V_TOP
-                  : (vel_n < -$signed({{(SB - VB){1'b0}}, V_TOP})) ? -V_TOP : vel_n[VB-1:0];
-    acc_reg      <= (acc_n > $signed({{(SB - AB){1'b0}}, A_TOP})) ? A_TOP
-                  : (acc_n < -$signed({{(SB - AB){1'b0}}, A_TOP})) ? -A_TOP : acc_n[AB-1:0];
+    pos_reg      <= pos_sat;
+    vel_reg      <= vel_sat;
+    acc_reg      <= acc_sat;
     age_reg      <= age_n;
     bias_reg     <= bias_n;
     seq_reg      <= seq_n;
@@ -453,6 +488,7 @@ module prenc_tracker #(
     vel_corr_reg <= vel_corr_n;
     pos_corr_reg <= pos_corr_n;
     negative_reg <= negative_n;
+    dividing_reg <= dividing_n;
     decaying_reg <= decaying_n;
     level_reg    <= level_n;
     slope_reg    <= slope_n;
@@ -475,9 +511,10 @@ module prenc_tracker #(
       product2_reg <= {XB{1'b0}};
       product3_reg <= {XB{1'b0}};
       acc_corr_reg <= {RB{1'b0}};
-      vel_corr_reg <= {RB{1'b0}};
-      pos_corr_reg <= {RB{1'b0}};
+      vel_corr_reg <= {CB{1'b0}};
+      pos_corr_reg <= {CB{1'b0}};
       negative_reg <= 1'b0;
+      dividing_reg <= 7'd0;
       decaying_reg <= 1'b0;
       level_reg    <= {VB{1'b0}};
       slope_reg    <= {RB{1'b0}};
@@ -488,7 +525,8 @@ module prenc_tracker #(
   assign accel    = {{10{acc_reg[AB-1]}}, acc_reg[AB-1:12]};
   assign valid    = valid_reg;
 
-  wire unused = &{1'b0, quotient[7:0], sh_wide[VB+24:RB], z_diff[1:0]};
+  wire unused = &{1'b0, quotient[7:0], sh_wide[VB+24:RB], z_diff[1:0], shifted[RB-1:CB],
+                  div_done, first_vel[SB-1:SB-6]};
 
 endmodule
 

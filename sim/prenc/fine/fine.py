@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/fine/prenc_fine.v: prenc_velocity and prenc_fine_position side by side,
-and with CAL = 1 the calibration table (prenc.cal.lookup, rtl/cal/prenc_cal_lookup.v)
-between them and the disc's true edges.
+"""Model of rtl/fine/prenc_fine.v: prenc_velocity (or, with TRACKER = 1, prenc_tracker:
+`gains`, its table's words) and prenc_fine_position side by side, and with CAL = 1 the
+calibration table (prenc.cal.lookup, rtl/cal/prenc_cal_lookup.v) between them and the
+disc's true edges.
 
 With CAL = 1 (docs/calibration.md):
 
@@ -22,6 +23,7 @@ from ..cal.decoder_quarter import DecoderQuarter
 from ..cal.lookup import CalLookup
 from ..cal.table import FRAC as CAL_BITS   # the table's fractional bits
 from .fine_position import FinePosition
+from .tracker import Tracker
 from .velocity import FRAC, Velocity
 
 LATE = 2           # the decoder's step -> prenc_velocity's, with the table (its answer,
@@ -33,13 +35,16 @@ POS_DELAY = 2      # the velocity's corrections -> prenc_fine_position's (pos_hy
 class Fine:
     def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
                  window: int = 2048, timer_bits: int = 26, cal: int = 0, table=None,
-                 quarter_windows: int = 0, accel_fit: int = 1):
+                 quarter_windows: int = 0, accel_fit: int = 1, gains: list[int] | None = None):
         if cal not in (0, 1):
             raise ValueError(f"cal = {cal} must be 0 or 1")
         self.cal = cal
-        self.velocity = Velocity(window=window, timer_bits=timer_bits,
-                                 cal_bits=CAL_BITS if cal else 0, quarter_windows=quarter_windows,
-                                 accel_fit=accel_fit)
+        if gains is not None:   # TRACKER = 1: prenc_tracker with this gain table
+            self.velocity = Tracker(gains, timer_bits=timer_bits)
+        else:
+            self.velocity = Velocity(window=window, timer_bits=timer_bits,
+                                     cal_bits=CAL_BITS if cal else 0, quarter_windows=quarter_windows,
+                                     accel_fit=accel_fit)
         self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
         self.lookup = CalLookup(n, table) if cal else None
         self.decoder_quarter = DecoderQuarter(n)

@@ -4,7 +4,7 @@ edges by a tracking filter whose gains come from a table (prenc.fine.tracker_gai
 
 Units: quarters and clocks. The state is integer fixed point:
 
-    pos   the predicted position minus the last edge crossed, 2^-40 quarter (+-4)
+    pos   the predicted position minus the last edge crossed, 2^-40 quarter (+-8)
     vel   quarters per clock, 2^-40                                         (+-2)
     acc   quarters per clock^2, 2^-60
 
@@ -23,14 +23,16 @@ itself: d = x - x_last is +1, -1 or 0):
   for all four, a gain a clock;
 - the corrections land APPLY = 32 clocks after the step, as if they had at the step
   and the state had moved since: acc += g2 e, vel += g1 e + 32 (g2 e >> 20),
-  pos += g0 e + 32 g1 e + 496 (g2 e >> 20) (a power of two: shifts, no multiplier).
+  pos += g0 e + 32 g1 e + 512 (g2 e >> 20) (32 32 / 2 for 32 31 / 2: shifts, no
+  multiplier).
   A step while an update is under way is referred (pos) but measures nothing.
 
 The start: the first step (after reset, a stop or an illegal transition) is an anchor;
 the second one gives the velocity, one quarter over the clocks between them (a serial
-division, prenc_divider: its DIV_CLOCKS later, the position moved on by as many clocks);
-the filter starts at age 0 then. A reversal or a step during that division makes the
-step the anchor again.
+division, prenc_divider), LOAD = 64 clocks after the step, the position moved on by as
+many clocks (a shift); the filter starts at age 0 then. Steps before that are referred (pos -= d, so that
+the position is right when the velocity loads); a reversal makes the step the anchor
+again.
 
 The output (`velocity`, a clock after the state): the state's velocity, 0 unless it has
 the sign of the last step; once the predicted position is 2 quarters past the last edge
@@ -47,7 +49,10 @@ from __future__ import annotations
 from . import tracker_gains as tg
 from .velocity import DIV_CLOCKS, FRAC, Divider
 
-POS_BITS = 44              # pos: signed, 2^-40 quarter
+assert DIV_CLOCKS < 64
+
+POS_BITS = 44              # pos: signed, 2^-40 quarter (+-8 quarters)
+CORR_BITS = 46             # the position's and the velocity's corrections, 2^-40
 VEL_BITS = 42              # vel: signed, 2^-40 quarter per clock
 ACC_BITS = 52              # acc: signed, 2^-60 quarter per clock^2
 STATE_FRAC = 40
@@ -59,7 +64,7 @@ BIAS_BITS = 16             # the innovations' running mean: signed, 2^-8 sigma
 AGE_BITS = 10
 AGE_FLOOR = 4
 APPLY = 32                 # clocks from the step to the corrections
-POS_LIMIT = 4 << STATE_FRAC
+LOAD = 64                  # clocks from the second step to the first velocity (> DIV_CLOCKS)
 MANEUVER = 1 << 8          # |bias| above 1 sigma
 
 # The sequence after a step (seq): the table's word, 12 multiplier clocks, 4 shifts.
@@ -67,8 +72,14 @@ S_READ, S_MUL, S_ACC, S_VEL, S_POS, S_BIAS = 1, 2, 2 + 12, 3 + 12, 4 + 12, 5 + 1
 
 
 def saturate(value: int, bits: int) -> int:
+    """Saturated to a signed value of `bits` bits, symmetric (-(2^(bits-1) - 1) at least)."""
     top = (1 << (bits - 1)) - 1
     return max(-top, min(top, value))
+
+
+def clamp(value: int, bits: int) -> int:
+    """Saturated to a signed value of `bits` bits (two's complement: -2^(bits-1) at least)."""
+    return max(-(1 << (bits - 1)), min((1 << (bits - 1)) - 1, value))
 
 
 def wrap(value: int, bits: int) -> int:
@@ -102,7 +113,7 @@ class Tracker:
     def reset(self) -> None:
         self.phase = self.NONE
         self.valid = 0
-        self.velocity = 0       # the output, 2^-40 quarter per clock
+        self.velocity = 0       # the output: quarters per clock, FRAC (48) fractional bits
         self.cw = 1             # the last step's direction
         self.since = 0          # clocks since the last step (saturating)
         self.pos = 0
@@ -119,6 +130,7 @@ class Tracker:
         self.vel_corr = 0
         self.pos_corr = 0
         self.negative = 0       # the first velocity's sign
+        self.dividing = 0       # clocks since the division started (7 bits, wrapping)
         self.decaying = 0
         self.level = 0
         self.slope = 0
@@ -139,11 +151,19 @@ class Tracker:
             magnitude = min(magnitude, self.level)
         return magnitude if self.cw else -magnitude
 
-    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0) -> None:
+    @property
+    def accel(self) -> int:
+        """The acceleration output: quarters per clock^2, FRAC (48) fractional bits."""
+        return self.acc >> (STATE_FRAC + ACC_SHIFT - FRAC)
+
+    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0,
+              c_lo: int = 0, c_hi: int = 0) -> None:
+        """c_lo, c_hi: a calibration table's corrections, which the tracker does not use
+        (its gain table's sigma covers the disc's edge errors)."""
         if rst:
             self.reset()
             return
-        div_done, quotient = self.div.done, self.div.quotient
+        quotient = self.div.quotient
         start = cancel = 0
         shown = self.shown()
         seq, phase = self.seq, self.phase
@@ -153,6 +173,7 @@ class Tracker:
         vel_n = self.vel + (self.acc >> ACC_SHIFT)
         acc_n = self.acc
         since_n = min(self.since + 1, self.timer_max)
+        dividing_n = (self.dividing + 1) & 127
         seq_n = seq + 1 if seq else 0
 
         # The update's sequence.
@@ -167,12 +188,12 @@ class Tracker:
             self.acc_corr = shifter(self.product[2], self.field(2)[1])
         elif seq == S_VEL:
             r1 = shifter(self.product[1], self.field(1)[1])
-            self.vel_corr = wrap(r1 + (self.acc_corr >> (ACC_SHIFT - 5)), RESULT_BITS)
-            self.pos_corr = wrap((r1 << 5) + ((self.acc_corr * 496) >> ACC_SHIFT), RESULT_BITS)
+            self.vel_corr = wrap(r1 + (self.acc_corr >> (ACC_SHIFT - 5)), CORR_BITS)
+            self.pos_corr = wrap((r1 << 5) + (self.acc_corr >> (ACC_SHIFT - 9)), CORR_BITS)
         elif seq == S_POS:
-            self.pos_corr = wrap(self.pos_corr + shifter(self.product[0], self.field(0)[1]), RESULT_BITS)
+            self.pos_corr = wrap(self.pos_corr + shifter(self.product[0], self.field(0)[1]), CORR_BITS)
         elif seq == S_BIAS:
-            z = saturate(shifter(self.product[3], self.field(3)[1]), BIAS_BITS)
+            z = clamp(shifter(self.product[3], self.field(3)[1]), BIAS_BITS)
             self.bias += (z - self.bias) >> 2
         elif seq == APPLY:
             pos_n += self.pos_corr
@@ -180,11 +201,12 @@ class Tracker:
             acc_n += self.acc_corr
             seq_n = 0
 
-        # The first velocity, from the division.
-        if phase == self.DIVIDE and div_done:
+        # The first velocity, from the division (done DIV_CLOCKS after the step), LOAD
+        # clocks after the step.
+        if phase == self.DIVIDE and self.dividing == LOAD:
             v = quotient >> (FRAC - STATE_FRAC)
             vel_n = -v if self.negative else v
-            pos_n, acc_n = vel_n * DIV_CLOCKS, 0
+            pos_n, acc_n = self.pos + vel_n * LOAD, 0
             self.phase, self.valid, self.age, self.bias = self.TRACK, 1, 0, 0
 
         # An overdue edge: the output decays to 0, a stop.
@@ -219,7 +241,7 @@ class Tracker:
                 pos_n = pos_n - (d << STATE_FRAC)
                 if seq == 0:
                     e = ((d << STATE_FRAC) - predicted) >> (STATE_FRAC - tg.INNOVATION_FRAC)
-                    self.e = saturate(e, E_BITS)
+                    self.e = clamp(e, E_BITS)
                     age = self.age
                     if abs(self.bias) > MANEUVER:
                         age = max(age >> 1, AGE_FLOOR)
@@ -228,17 +250,19 @@ class Tracker:
                     self.product = [0, 0, 0, 0]
                     seq_n = S_READ
             elif phase == self.ANCHOR and not reversal and not stop:
-                start, self.negative = 1, int(not step_cw)
+                start, self.negative, dividing_n = 1, int(not step_cw), 1
                 self.phase = self.DIVIDE
                 pos_n = vel_n = acc_n = 0
-            else:   # an anchor: the first step, a reversal, a stop, a step during the division
+            elif phase == self.DIVIDE and not reversal and not stop:
+                pos_n = pos_n - (d << STATE_FRAC)   # referred, as the velocity is not known yet
+            else:   # an anchor: the first step, a reversal, a stop
                 self.phase = self.ANCHOR
                 pos_n = vel_n = acc_n = 0
                 seq_n, cancel = 0, 1
 
         self.div.clock(start, 1 << FRAC, self.since, cancel)
-        self.velocity = shown
-        self.pos = max(-POS_LIMIT, min(POS_LIMIT, pos_n))
+        self.velocity = shown << (FRAC - STATE_FRAC)
+        self.pos = clamp(pos_n, POS_BITS)
         self.vel = saturate(vel_n, VEL_BITS)
-        self.acc = saturate(acc_n, ACC_BITS)
-        self.since, self.seq = since_n, seq_n
+        self.acc = clamp(acc_n, ACC_BITS)
+        self.since, self.seq, self.dividing = since_n, seq_n, dividing_n

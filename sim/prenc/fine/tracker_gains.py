@@ -175,10 +175,15 @@ def table(n: int = 10, clk_hz: float = 30e6, sigma: float = SIGMA["ideal"]) -> l
     return words
 
 
+def render(n: int = 10, clk_hz: float = 30e6, sigma: float = SIGMA["ideal"]) -> bytes:
+    """The table as a $readmemh file's text."""
+    digits = (WORD_BITS + 3) // 4
+    return "".join(f"{w:0{digits}x}\n" for w in table(n, clk_hz, sigma)).encode()
+
+
 def write(path: str | Path, n: int = 10, clk_hz: float = 30e6, sigma: float = SIGMA["ideal"]) -> None:
     """The table as a $readmemh file."""
-    digits = (WORD_BITS + 3) // 4
-    Path(path).write_text("".join(f"{w:0{digits}x}\n" for w in table(n, clk_hz, sigma)))
+    Path(path).write_bytes(render(n, clk_hz, sigma))
 
 
 def read(path: str | Path) -> list[int]:

@@ -11,11 +11,13 @@ fine blocks see from the core:
   and pos_valid = 1: the core is taken as locked, so that what is measured is the
   fine blocks alone (the core's promise has its own tests and goals).
 
-Then it runs the models of rtl/fine/ (prenc.fine.velocity, prenc.fine.fine_position)
-clock by clock, in three configurations: the default (full-cycle windows, WINDOW = 2048,
-for any disc: "ours"), quarter windows (QUARTER_WINDOWS = 1, WINDOW = 640, for a disc
-whose edges are accurate or calibrated: "quarter") and the small FPGA's (ACCEL_FIT = 0,
-the default's windows without the fit: "mean"); and three velocity estimators that
+Then it runs the models of rtl/fine/ (prenc.fine.velocity, prenc.fine.tracker,
+prenc.fine.fine_position) clock by clock, in four configurations: the default
+(full-cycle windows, WINDOW = 2048, for any disc: "ours"), quarter windows
+(QUARTER_WINDOWS = 1, WINDOW = 640, for a disc whose edges are accurate or calibrated:
+"quarter"), the small FPGA's (ACCEL_FIT = 0, the default's windows without the fit:
+"mean") and the tracking filter (TRACKER = 1, its gain table for the disc: "tracker");
+and three velocity estimators that
 users pick instead, each with the same interpolation and extrapolation for its fine
 position:
 
@@ -39,7 +41,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..fine import tracker_gains
 from ..fine.fine_position import OUTPUT_DELAY, STEP_DELAY, FinePosition
+from ..fine.tracker import Tracker
 from ..fine.velocity import FRAC, Velocity
 from .encoder import Disc
 from .printing import Printing
@@ -109,11 +113,16 @@ def default_window(quarter_windows: int) -> int:
 
 def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
              lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N,
-             quarter_windows: int = 0, accel_fit: int = 1) -> dict[str, np.ndarray]:
+             quarter_windows: int = 0, accel_fit: int = 1,
+             gains: list[int] | None = None) -> dict[str, np.ndarray]:
     """The models of prenc_velocity and prenc_fine_position, clock by clock (window:
-    default_window(quarter_windows) unless given)."""
-    vel = Velocity(window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
-                   accel_fit=accel_fit)
+    default_window(quarter_windows) unless given); with `gains` (a gain table's words),
+    prenc_tracker's model instead of prenc_velocity's (prenc_fine's TRACKER = 1)."""
+    if gains is not None:
+        vel = Tracker(gains)
+    else:
+        vel = Velocity(window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
+                       accel_fit=accel_fit)
     fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
     total = len(sync.step)
     v_out = np.zeros(total)
@@ -305,17 +314,20 @@ def score(case: Case, sync: Sync, fine_quarters: np.ndarray, velocity: np.ndarra
 
 
 def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
-    """The coarse position, ours in three configurations and the three baselines in one
-    case."""
+    """The coarse position, ours in four configurations (the tracker with the gain table
+    for the disc: sigma ideal or printed) and the three baselines in one case."""
     sync = sync_stream(case.theta, printing)
     ours = run_fine(sync)
     quarter = run_fine(sync, quarter_windows=1)
     mean = run_fine(sync, accel_fit=0)
+    tracker = run_fine(sync, gains=tracker_gains.table(N, CLK_HZ, tracker_gains.SIGMA["ideal" if printing is None
+                                                                                     else "printed"]))
     scale = 1 << FINE_BITS
     rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "ours": score(case, sync, ours["fine"] / scale, ours["velocity"]),
             "quarter": score(case, sync, quarter["fine"] / scale, quarter["velocity"]),
-            "mean": score(case, sync, mean["fine"] / scale, mean["velocity"])}
+            "mean": score(case, sync, mean["fine"] / scale, mean["velocity"]),
+            "tracker": score(case, sync, tracker["fine"] / scale, tracker["velocity"])}
     for name, velocity in (("period", period_velocity(sync)), ("mixed", sampled_velocity(sync, True)),
                            ("count", sampled_velocity(sync, False))):
         rows[name] = score(case, sync, interpolate(sync, velocity) / scale, velocity)

@@ -17,7 +17,10 @@ disc turns, some near the quarter in use. With QUARTER_WINDOWS = 1 the windows c
 any edge, and the test counts the decisions: a window joining a run, a fit, a fit at a
 single large failure and a first small failure (the window's own mean). With
 ACCEL_FIT = 0 (no fit, the small FPGA's velocity) every close loads the mean over two
-windows: the sequencer's states without the multiplier run, and nothing is held.
+windows: the sequencer's states without the multiplier run, and nothing is held. With
+TRACKER = 1 the velocity is prenc_tracker's (prenc.fine.tracker.Tracker, its gain table
+for N = 6 at 100 kHz, as in tb/fine/prenc_tracker), and the test counts its updates and
+stops instead.
 """
 
 from __future__ import annotations
@@ -30,13 +33,14 @@ import cocotb
 
 from common import clock_and_check, rng, start_clock_and_reset
 from prenc.cal.table import Table, read
+from prenc.fine import tracker_gains
 from prenc.fine.fine import Fine
 from prenc.fine.velocity import ACCEL_BITS, VELOCITY_BITS
 from prenc.virtual.edge_timing import true_corrections
 from prenc.virtual.fine_bench import sync_stream
 from prenc.virtual.printing import Printing
 from prenc.virtual.trajectory import Trajectory
-from runner import SIM_BUILD, SIMULATORS, run
+from runner import SIM_BUILD, SIMULATORS, gains_file, run
 
 TOPLEVEL = "prenc_fine"
 N, FINE_BITS, LOOKAHEAD_HALVES, WINDOW, TIMER_BITS = 6, 6, 21, 96, 12
@@ -106,12 +110,17 @@ async def matches_the_models_clock_by_clock(dut):
     cal = int(dut.CAL.value)
     quarter = int(dut.QUARTER_WINDOWS.value)
     fit = int(dut.ACCEL_FIT.value)
+    tracker = int(dut.TRACKER.value)
     inputs, total = stimulus(seed, cal)
     table = read(os.environ["PRENC_CAL_FILE"], n=N).c if cal else None
+    gains = tracker_gains.read(os.environ["PRENC_GAIN_FILE"]) if tracker else None
     model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
                  timer_bits=TIMER_BITS, cal=cal, table=table, quarter_windows=quarter,
-                 accel_fit=fit)
+                 accel_fit=fit, gains=gains)
     vel = model.velocity
+    if tracker:
+        await tracker_matches(dut, model, inputs, total, seed, cal)
+        return
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
@@ -155,14 +164,44 @@ async def matches_the_models_clock_by_clock(dut):
     assert not quarter or min(decisions.values()) > 0, decisions
 
 
-@pytest.mark.parametrize("cal, quarter, fit", [(0, 0, 1), (1, 0, 1), (0, 1, 1), (1, 1, 1), (0, 0, 0),
-                                              (1, 0, 0)])
+async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: int) -> None:
+    """TRACKER = 1: the outputs against the model, clock by clock; prenc_tracker's
+    updates and stops counted."""
+    names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
+             "cal_data")
+    await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
+    vel = model.velocity
+    updates = stops = interpolated = 0
+    columns = [inputs[k].tolist() for k in names]
+    for c in range(total):
+        now = dict(zip(names, (col[c] for col in columns)))
+        seq, phase = vel.seq, vel.phase
+        model.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], now["illegal"],
+                    write=now["cal_write"], address=now["cal_address"],
+                    data=now["cal_data"] - ((now["cal_data"] & 0x8000) << 1))
+        updates += int(seq == 0 and vel.seq == 1)
+        stops += int(phase == vel.TRACK and vel.phase == vel.NONE)
+        interpolated += model.interpolated
+        expected = {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
+                    "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
+                    "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
+                    "fine_valid": model.fine_valid, "interpolated": model.interpolated}
+        await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
+    dut._log.info("seed %d, CAL %d, TRACKER 1: %d clocks, %d updates, %d stops, %d interpolated",
+                  seed, cal, total, updates, stops, interpolated)
+    assert updates > 200 and stops >= 2 and interpolated > total // 2
+
+
+@pytest.mark.parametrize("cal, quarter, fit, tracker", [(0, 0, 1, 0), (1, 0, 1, 0), (0, 1, 1, 0), (1, 1, 1, 0),
+                                                        (0, 0, 0, 0), (1, 0, 0, 0), (0, 0, 1, 1), (1, 0, 1, 1)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_fine(simulator, cal, quarter, fit):
+def test_prenc_fine(simulator, cal, quarter, fit, tracker):
     parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
                   "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS, "CAL": cal,
-                  "QUARTER_WINDOWS": quarter, "ACCEL_FIT": fit}
+                  "QUARTER_WINDOWS": quarter, "ACCEL_FIT": fit, "TRACKER": tracker}
     env = {}
     if cal:
         parameters["CAL_FILE"] = env["PRENC_CAL_FILE"] = cal_file()
+    if tracker:
+        parameters["GAIN_FILE"] = env["PRENC_GAIN_FILE"] = str(gains_file(N, 1e5))
     run(__file__, TOPLEVEL, simulator, parameters=parameters, extra_env=env)
