@@ -4,6 +4,7 @@
 
     python scripts/synth.py --board icebreaker [--bits 10] [--out build/synth]
     python scripts/synth.py --board ulx3s
+    python scripts/synth.py --board ulx3s --tracker printed   # the velocity from prenc_tracker
     python scripts/synth.py --core ice40-hx8k --bits 16      # the core alone, no bitstream
     python scripts/synth.py --core ice40-up5k --top prenc_core_harness   # few pins: the UP5K
     python scripts/synth.py --core ice40-hx8k --param HYPOTHESES=0       # another parameter
@@ -79,7 +80,7 @@ class Board:
     top: str
     pins: str  # .pcf or .lpf, relative to constraints/<name>/
     clock_mhz: float  # the design clock (after the board's PLL)
-    cal: bool = False  # the top has the calibration table's parameters (CAL, CAL_FILE)
+    cal: bool = False  # the top has the fine blocks' parameters (CAL, CAL_FILE, TRACKER, GAIN_FILE)
 
     @property
     def folder(self) -> Path:
@@ -308,19 +309,34 @@ def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
     return {"CAL": 1, "CAL_FILE": table.write(out / "calibration.hex")}
 
 
+def tracker_for(disc: str, bits: int, board: Board, out: Path) -> dict[str, object]:
+    """The parameters of a build whose velocity is prenc_tracker's: TRACKER = 1 and its
+    gain table for the disc (ideal or printed), N and the board's clock, written into `out`."""
+    from prenc.fine import tracker_gains
+
+    if not board.cal:
+        raise FlowError(f"the {board.name} board builds no velocity (FINE = 0): --tracker needs the fine blocks")
+    path = out / "gains.hex"
+    tracker_gains.write(path, bits, board.clock_mhz * 1e6, tracker_gains.SIGMA[disc])
+    return {"TRACKER": 1, "GAIN_FILE": path}
+
+
 def board_parameters(board: Board, bits: int, out: Path, baud: int | None = None,
-                     cal: str | None = None) -> dict[str, object]:
-    """The board top's parameters for a build (the ROM, and a table file, written into `out`)."""
+                     cal: str | None = None, tracker: str | None = None) -> dict[str, object]:
+    """The board top's parameters for a build (the ROM, and table files, written into `out`)."""
     params: dict[str, object] = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom_for(bits, out)}
     if baud:
         params["BAUD"] = baud
     if cal:
         params.update(cal_for(cal, bits, board, out))
+    if tracker:
+        params.update(tracker_for(tracker, bits, board, out))
     return params
 
 
-def board_build(board: Board, bits: int, out: Path, baud: int | None = None, cal: str | None = None) -> Result:
-    params = board_parameters(board, bits, out, baud, cal)
+def board_build(board: Board, bits: int, out: Path, baud: int | None = None, cal: str | None = None,
+                tracker: str | None = None) -> Result:
+    params = board_parameters(board, bits, out, baud, cal, tracker)
     sources = file_list(board.folder / f"{board.top}.f")
     return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins)
 
@@ -404,6 +420,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--cal", metavar="FILE|1",
                         help="with --board: build the calibration table in (CAL = 1): a table file from "
                              "`prenc calibrate` (checked), or 1 for an empty one, written at run time")
+    parser.add_argument("--tracker", choices=("ideal", "printed"),
+                        help="with --board: the velocity from prenc_tracker (TRACKER = 1), its gain table for "
+                             "an ideal or a printed disc at the board's clock")
     parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
     parser.add_argument("--top", choices=("prenc_core", "prenc_core_harness", "prenc_wb", "prenc_wb_harness"),
                         default="prenc_core",
@@ -426,6 +445,8 @@ def main(argv: list[str] | None = None) -> int:
         parser.error("--param goes with --core")
     if args.cal and not args.board:
         parser.error("--cal goes with --board")
+    if args.tracker and not args.board:
+        parser.error("--tracker goes with --board")
     if seeds != [1] and not args.core:
         parser.error("--seeds goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
@@ -441,7 +462,7 @@ def main(argv: list[str] | None = None) -> int:
         where = out / f"seed{seed}" if sweep else out
         try:
             if args.board:
-                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal)
+                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal, args.tracker)
             else:
                 result = core_build(args.core, args.bits, args.freq, where, top=args.top, parameters=extra,
                                     seed=seed, require_timing=not sweep)

@@ -51,6 +51,10 @@
 //   ACCEL_FIT     prenc_velocity's: 1, an acceleration fitted when windows disagree
 //                 (default); 0: the mean of the last two windows, no multiplier (about
 //                 half its logic, for a small FPGA; needs QUARTER_WINDOWS = 0)
+//   TRACKER       prenc_fine's: 1, the velocity from prenc_tracker, a tracking filter
+//                 whose gains come from GAIN_FILE (`prenc gains` for N, the disc's edge
+//                 error and CLK_HZ); 0: prenc_velocity (default)
+//   GAIN_FILE     with TRACKER = 1: the gain table ($readmemh)
 //   CAL           1: the fine position and the velocity use the sync track's calibration
 //                 table (docs/calibration.md; needs FINE = 1), written over the host
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
@@ -94,6 +98,8 @@ module prenc_board #(
   parameter integer VELOCITY_WINDOW = 2048,
   parameter integer QUARTER_WINDOWS = 0,
   parameter integer ACCEL_FIT       = 1,
+  parameter integer TRACKER         = 0,
+  parameter         GAIN_FILE       = "prenc_gains_n10_30mhz.hex",
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
@@ -263,6 +269,8 @@ module prenc_board #(
     .WINDOW           (VELOCITY_WINDOW),
     .QUARTER_WINDOWS  (QUARTER_WINDOWS),
     .ACCEL_FIT        (ACCEL_FIT),
+    .TRACKER          (TRACKER),
+    .GAIN_FILE        (GAIN_FILE),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)

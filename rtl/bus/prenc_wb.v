@@ -48,7 +48,8 @@
 // as the map), checked there; N <= 24 fits the map's fields. FINE (1: prenc_fine is
 // built; 0: not, FINE_POS reads POS_HYB and VELOCITY 0), FINE_BITS (0..8, default 8;
 // N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048),
-// QUARTER_WINDOWS (0), ACCEL_FIT (1; both in prenc_board's header and docs/fine.md),
+// QUARTER_WINDOWS (0), ACCEL_FIT (1), TRACKER (0), GAIN_FILE (all in prenc_board's header
+// and docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
 // CAL_FILE (the table it starts with; "" : all zero).
 
@@ -76,6 +77,8 @@ module prenc_wb #(
   parameter integer VELOCITY_WINDOW = 2048,
   parameter integer QUARTER_WINDOWS = 0,
   parameter integer ACCEL_FIT       = 1,
+  parameter integer TRACKER         = 0,
+  parameter         GAIN_FILE       = "prenc_gains_n10_30mhz.hex",
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = ""
 ) (
@@ -254,6 +257,8 @@ module prenc_wb #(
     .WINDOW           (VELOCITY_WINDOW),
     .QUARTER_WINDOWS  (QUARTER_WINDOWS),
     .ACCEL_FIT        (ACCEL_FIT),
+    .TRACKER          (TRACKER),
+    .GAIN_FILE        (GAIN_FILE),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)
@@ -370,7 +375,7 @@ module prenc_wb #(
       case (wb_adr_i)
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
-        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 3'd0, ~ACCEL_FIT[0], QUARTER_WINDOWS[0],
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 2'd0, TRACKER[0], ~ACCEL_FIT[0], QUARTER_WINDOWS[0],
                                          CAL[0], FINE[0], FINE_BITS[3:0], N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};
         A_STATUS:           wb_dat_o <= {24'd0, status};

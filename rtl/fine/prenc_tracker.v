@@ -26,7 +26,7 @@
 //   the filter starts at age 0. Steps before that are referred; a reversal is an anchor.
 // - The output: vel, 0 unless it has the last step's sign; once pos is 2 quarters past
 //   the last edge (an edge overdue), a level from the velocity shown falls by about
-//   v^2 a clock (|vel| shifted by its leading one), reaching 0 within 2.5 to 3
+//   v^2 a clock (a power of two by |vel|'s leading one), reaching 0 within 2.25 to 3
 //   predicted quarter periods: a stop (0, valid; the next step is an anchor), as is no
 //   step for 2^TIMER_BITS - 1 clocks. An illegal transition drops the velocity (valid
 //   0) until the next estimate.
@@ -101,8 +101,8 @@ module prenc_tracker #(
   endgenerate
 
   localparam [1:0] P_NONE = 2'd0, P_ANCHOR = 2'd1, P_DIVIDE = 2'd2, P_TRACK = 2'd3;
-  localparam [5:0] S_READ = 6'd1, S_MUL = 6'd2, S_ACC = 6'd14, S_VEL = 6'd15, S_POS = 6'd16,
-                   S_BIAS = 6'd17, S_APPLY = 6'd32;
+  localparam [5:0] S_READ = 6'd1, S_WORD = 6'd2, S_MUL = 6'd3, S_ACC = 6'd15, S_VEL = 6'd16,
+                   S_POS = 6'd17, S_BIAS = 6'd18, S_APPLY = 6'd32;
 
   localparam signed [SB-1:0] ONE       = {{(SB - 41){1'b0}}, 1'b1, 40'd0};   // a quarter
   localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
@@ -138,6 +138,7 @@ module prenc_tracker #(
   reg [5:0]           seq_reg;
   reg signed [EB-1:0] e_reg;
   reg [10:0]          address_reg;
+  reg [WB-1:0]        read_reg;
   reg [WB-1:0]        word_reg;
   reg signed [XB-1:0] product0_reg;
   reg signed [XB-1:0] product1_reg;
@@ -173,7 +174,9 @@ module prenc_tracker #(
     .quotient (quotient)
   );
 
-  // |vel| and its leading one; the table's column (2 an octave from 2^-21, 0..31).
+  // |vel| and its leading one, registered (of the clock before: a carry chain and a
+  // priority encoder less on the way to the table's address); the table's column (2 an
+  // octave from 2^-21, 0..31).
   wire [VB-2:0] speed = vel_reg[VB-1] ? -vel_reg[VB-2:0] : vel_reg[VB-2:0];
   reg  [5:0]    lead_one;
   integer       i;
@@ -184,7 +187,13 @@ module prenc_tracker #(
     end
   end
   wire          half = (lead_one == 6'd0) ? 1'b0 : speed[lead_one - 6'd1];
-  wire [6:0]    col_raw = {lead_one, half};       // 2 lead_one + half
+  reg  [5:0]    lead_one_reg;
+  reg           half_reg;
+  always @(posedge clk) begin
+    lead_one_reg <= rst ? 6'd0 : lead_one;
+    half_reg     <= rst ? 1'b0 : half;
+  end
+  wire [6:0]    col_raw = {lead_one_reg, half_reg};       // 2 lead_one + half
   wire [4:0]    col = (col_raw < 7'd38) ? 5'd0 : (col_raw > 7'd69) ? 5'd31 : col_raw[4:0] - 5'd6;
 
   // The age, halved on a maneuver (not below 4), and its bin (0..15, then 4 an octave).
@@ -215,39 +224,40 @@ module prenc_tracker #(
   wire [5:0]    s3 = word_reg[71:66];
 
   // The multipliers: a mantissa bit a clock, MSB first.
-  wire [3:0]          bit_index = 4'd11 - seq_reg[3:0] + 4'd2;   // 11 at S_MUL
+  wire [3:0]          bit_index = 4'd11 - seq_reg[3:0] + 4'd3;   // 11 at S_MUL
   wire signed [XB-1:0] e_wide = {{(XB - EB){e_reg[EB-1]}}, e_reg};
   wire                 mul = (seq_reg >= S_MUL) && (seq_reg < S_ACC);
 
   // The shifter: (value << 24) >>> amount, kept to RB bits.
-  reg signed [VB:0]   sh_value;
+  reg signed [XB-1:0] sh_value;
   reg [5:0]           sh_amount;
   always @(*) begin
     case (seq_reg)
       S_ACC: begin
-        sh_value  = {{(VB + 1 - XB){product2_reg[XB-1]}}, product2_reg};
+        sh_value  = product2_reg;
         sh_amount = s2;
       end
       S_VEL: begin
-        sh_value  = {{(VB + 1 - XB){product1_reg[XB-1]}}, product1_reg};
+        sh_value  = product1_reg;
         sh_amount = s1;
       end
       S_POS: begin
-        sh_value  = {{(VB + 1 - XB){product0_reg[XB-1]}}, product0_reg};
+        sh_value  = product0_reg;
         sh_amount = s0;
       end
-      S_BIAS: begin
-        sh_value  = {{(VB + 1 - XB){product3_reg[XB-1]}}, product3_reg};
+      default: begin   // S_BIAS
+        sh_value  = product3_reg;
         sh_amount = s3;
-      end
-      default: begin   // the decay's slope, |vel| x 2^(lead_one + 1 - 40): v^2 to 2 v^2
-        sh_value  = {2'b00, speed};
-        sh_amount = 6'd63 - lead_one;
       end
     endcase
   end
-  wire signed [VB+24:0] sh_wide = $signed({sh_value, 24'd0}) >>> sh_amount;
+  wire signed [XB+23:0] sh_wide = $signed({sh_value, 24'd0}) >>> sh_amount;
   wire signed [RB-1:0]  shifted = sh_wide[RB-1:0];
+
+  // The decay's slope, about v^2 a clock: 2^(2 lead_one - 38) (v^2 to 4 v^2), at least 1.
+  wire [6:0]    slope_shift = {lead_one_reg, 1'b0} - 7'd38;
+  wire [RB-1:0] slope = (lead_one_reg < 6'd19) ? {{(RB - 1){1'b0}}, 1'b1}
+                                               : {{(RB - 1){1'b0}}, 1'b1} << slope_shift;
 
   // The output: vel with the last step's sign (else 0), under the decay's level.
   wire          same = cw_reg ? (!vel_reg[VB-1] && (vel_reg != {VB{1'b0}})) : vel_reg[VB-1];
@@ -401,8 +411,7 @@ module prenc_tracker #(
     end else if (phase_reg == P_TRACK && seq_reg == 6'd0 && !step && !illegal && overdue) begin
       decaying_n = 1'b1;
       level_n    = cw_reg ? shown : -shown;
-      slope_n    = (speed == {(VB - 1){1'b0}} || shifted == {RB{1'b0}}) ? {{(RB - 1){1'b0}}, 1'b1}
-                                                                       : shifted;
+      slope_n    = slope;
     end
     if (stop) begin
       phase_n    = P_NONE;
@@ -466,7 +475,10 @@ module prenc_tracker #(
   end
 
   always @(posedge clk) begin
-    if (seq_reg == S_READ) word_reg <= gains[address_reg];
+    // The table's word: read into the block RAM's register, then registered once more
+    // (the block RAM's output is slow).
+    if (seq_reg == S_READ) read_reg <= gains[address_reg];
+    if (seq_reg == S_WORD) word_reg <= read_reg;
     phase_reg    <= phase_n;
     valid_reg    <= valid_n;
     velocity_reg <= shown;
@@ -525,7 +537,7 @@ module prenc_tracker #(
   assign accel    = {{10{acc_reg[AB-1]}}, acc_reg[AB-1:12]};
   assign valid    = valid_reg;
 
-  wire unused = &{1'b0, quotient[7:0], sh_wide[VB+24:RB], z_diff[1:0], shifted[RB-1:CB],
+  wire unused = &{1'b0, quotient[7:0], sh_wide[XB+23:RB], z_diff[1:0], shifted[RB-1:CB],
                   div_done, first_vel[SB-1:SB-6]};
 
 endmodule

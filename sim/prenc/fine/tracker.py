@@ -37,8 +37,8 @@ again.
 The output (`velocity`, a clock after the state): the state's velocity, 0 unless it has
 the sign of the last step; once the predicted position is 2 quarters past the last edge
 (an edge overdue), it decays linearly: a level starting at the velocity shown falls by
-about v^2 a clock (|vel| shifted by its own leading one: v^2 to 2 v^2), which reaches 0
-within 2.5 to 3 predicted quarter periods after the edge; there, or after no step for
+about v^2 a clock (a power of two from |vel|'s leading one p, 2^(2p - 38) in 2^-40: v^2
+to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter periods after the edge; there, or after no step for
 2^TIMER_BITS - 1 clocks, the disc has stopped: the velocity reads 0 (valid) and the next
 step is an anchor. An illegal transition drops the velocity (`valid` 0) until the next
 estimate.
@@ -67,8 +67,10 @@ APPLY = 32                 # clocks from the step to the corrections
 LOAD = 64                  # clocks from the second step to the first velocity (> DIV_CLOCKS)
 MANEUVER = 1 << 8          # |bias| above 1 sigma
 
-# The sequence after a step (seq): the table's word, 12 multiplier clocks, 4 shifts.
-S_READ, S_MUL, S_ACC, S_VEL, S_POS, S_BIAS = 1, 2, 2 + 12, 3 + 12, 4 + 12, 5 + 12
+# The sequence after a step (seq): the table's word (read, then registered once more:
+# a block RAM's output is slow), 12 multiplier clocks, 4 shifts.
+S_READ, S_WORD, S_MUL = 1, 2, 3
+S_ACC, S_VEL, S_POS, S_BIAS = S_MUL + 12, S_MUL + 13, S_MUL + 14, S_MUL + 15
 
 
 def saturate(value: int, bits: int) -> int:
@@ -124,6 +126,7 @@ class Tracker:
         self.seq = 0
         self.e = 0
         self.address = 0
+        self.read = 0           # the block RAM's read register
         self.word = 0
         self.product = [0, 0, 0, 0]
         self.acc_corr = 0
@@ -131,6 +134,8 @@ class Tracker:
         self.pos_corr = 0
         self.negative = 0       # the first velocity's sign
         self.dividing = 0       # clocks since the division started (7 bits, wrapping)
+        self.class_speed = 0    # |vel| of the clock before: its leading one and the bit
+                                # below it are registers (the table's column, the slope)
         self.decaying = 0
         self.level = 0
         self.slope = 0
@@ -164,6 +169,7 @@ class Tracker:
             self.reset()
             return
         quotient = self.div.quotient
+        vel = self.vel
         start = cancel = 0
         shown = self.shown()
         seq, phase = self.seq, self.phase
@@ -178,7 +184,9 @@ class Tracker:
 
         # The update's sequence.
         if seq == S_READ:
-            self.word = self.words[self.address]
+            self.read = self.words[self.address]
+        elif seq == S_WORD:
+            self.word = self.read
         elif S_MUL <= seq < S_ACC:
             bit = tg.MANTISSA_BITS - 1 - (seq - S_MUL)
             for i in range(4):
@@ -217,9 +225,9 @@ class Tracker:
             self.level -= self.slope
         elif phase == self.TRACK and seq == 0 and not step and not illegal \
                 and (self.pos if self.cw else -self.pos) >= 2 << STATE_FRAC:
-            speed = abs(self.vel)
             self.decaying, self.level = 1, abs(shown)
-            self.slope = max(1, shifter(speed, 63 - (speed.bit_length() - 1))) if speed else 1
+            lead = max(self.class_speed.bit_length() - 1, 0)
+            self.slope = 1 << (2 * lead - 38) if lead >= 19 else 1
 
         if stop:
             self.phase, self.decaying, self.level = self.NONE, 0, 0
@@ -245,7 +253,7 @@ class Tracker:
                     age = self.age
                     if abs(self.bias) > MANEUVER:
                         age = max(age >> 1, AGE_FLOOR)
-                    self.address = tg.column(abs(self.vel)) * tg.BINS + tg.age_bin(age)
+                    self.address = tg.column(self.class_speed) * tg.BINS + tg.age_bin(age)
                     self.age = min(age + 1, tg.AGE_MAX)
                     self.product = [0, 0, 0, 0]
                     seq_n = S_READ
@@ -266,3 +274,4 @@ class Tracker:
         self.vel = saturate(vel_n, VEL_BITS)
         self.acc = clamp(acc_n, ACC_BITS)
         self.since, self.seq, self.dividing = since_n, seq_n, dividing_n
+        self.class_speed = abs(vel)

@@ -45,7 +45,7 @@ from prenc.virtual.fine_bench import PRINTED
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.scenarios import scenarios
 from prenc.virtual.trajectory import Trajectory
-from runner import REPO, SIM_BUILD, rom_file, run
+from runner import REPO, SIM_BUILD, gains_file, rom_file, run
 
 TOPLEVEL = "prenc_wb"
 RESET = 4
@@ -228,6 +228,7 @@ async def registers_after_reset_and_writes(dut):
     assert await regs.PARAMS.fine_bits.read() == int(dut.FINE_BITS.value)
     assert await regs.PARAMS.quarter_windows.read() == int(dut.QUARTER_WINDOWS.value)
     assert await regs.PARAMS.mean_only.read() == 1 - int(dut.ACCEL_FIT.value)
+    assert await regs.PARAMS.tracker.read() == int(dut.TRACKER.value)
     assert await regs.STATUS.valid.read() == 0 and await regs.STATUS.mode.read() == 0
     for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME", "SNAP_FINE_POS",
                  "SNAP_VELOCITY", "TRACK_ERRORS"):
@@ -499,14 +500,18 @@ def test_prenc_wb_with_a_calibration_table(simulator):
                        else "registers_after_reset_and_writes"})
 
 
-@pytest.mark.parametrize("velocity", [{"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640}, {"ACCEL_FIT": 0}],
-                         ids=["quarter_windows", "without_the_fit"])
+@pytest.mark.parametrize("velocity", [{"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640}, {"ACCEL_FIT": 0},
+                                      {"TRACKER": 1}],
+                         ids=["quarter_windows", "without_the_fit", "tracker"])
 def test_prenc_wb_velocity_configurations(velocity):
     """The other velocity configurations: QUARTER_WINDOWS = 1 (VELOCITY_WINDOW 640, as the
-    bench at 30 MHz) and ACCEL_FIT = 0 (the mean of two windows, for a small FPGA). PARAMS
+    bench at 30 MHz), ACCEL_FIT = 0 (the mean of two windows, for a small FPGA) and
+    TRACKER = 1 (prenc_tracker, its gain table for N = 10 at 30 MHz, an ideal disc). PARAMS
     says which, and at a steady turn the snapshots' fine position and velocity meet the
     same goals."""
     tests = "registers_after_reset_and_writes|the_snapshot_holds_the_fine_position_and_velocity_of_its_clock"
+    if velocity.get("TRACKER"):
+        velocity = velocity | {"GAIN_FILE": str(gains_file(10, 30e6))}
     with regmap_env() as env:
         run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(10, 2) | velocity,
             extra_env={**env, "COCOTB_TEST_FILTER": tests})
