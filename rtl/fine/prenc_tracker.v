@@ -101,8 +101,8 @@ module prenc_tracker #(
   endgenerate
 
   localparam [1:0] P_NONE = 2'd0, P_ANCHOR = 2'd1, P_DIVIDE = 2'd2, P_TRACK = 2'd3;
-  localparam [5:0] S_READ = 6'd1, S_WORD = 6'd2, S_MUL = 6'd3, S_ACC = 6'd15, S_VEL = 6'd16,
-                   S_POS = 6'd17, S_BIAS = 6'd18, S_APPLY = 6'd32;
+  localparam [5:0] S_READ = 6'd1, S_WORD = 6'd2, S_MUL = 6'd3, S_SHIFT = 6'd15, S_ACC = 6'd16,
+                   S_VEL = 6'd17, S_POS = 6'd18, S_BIAS = 6'd19, S_APPLY = 6'd32;
 
   localparam signed [SB-1:0] ONE       = {{(SB - 41){1'b0}}, 1'b1, 40'd0};   // a quarter
   localparam signed [VB-1:0] V_TOP     = {1'b0, {(VB - 1){1'b1}}};
@@ -226,33 +226,37 @@ module prenc_tracker #(
   // The multipliers: a mantissa bit a clock, MSB first.
   wire [3:0]          bit_index = 4'd11 - seq_reg[3:0] + 4'd3;   // 11 at S_MUL
   wire signed [XB-1:0] e_wide = {{(XB - EB){e_reg[EB-1]}}, e_reg};
-  wire                 mul = (seq_reg >= S_MUL) && (seq_reg < S_ACC);
+  wire                 mul = (seq_reg >= S_MUL) && (seq_reg < S_SHIFT);
 
-  // The shifter: (value << 24) >>> amount, kept to RB bits.
+  // The shifter: (value << 24) >>> amount, kept to RB bits and registered; the gains in
+  // turn from S_SHIFT on (g2, g1, g0, gz), each used the clock after.
   reg signed [XB-1:0] sh_value;
   reg [5:0]           sh_amount;
   always @(*) begin
     case (seq_reg)
-      S_ACC: begin
+      S_SHIFT: begin
         sh_value  = product2_reg;
         sh_amount = s2;
       end
-      S_VEL: begin
+      S_SHIFT + 6'd1: begin
         sh_value  = product1_reg;
         sh_amount = s1;
       end
-      S_POS: begin
+      S_SHIFT + 6'd2: begin
         sh_value  = product0_reg;
         sh_amount = s0;
       end
-      default: begin   // S_BIAS
+      default: begin   // S_SHIFT + 3
         sh_value  = product3_reg;
         sh_amount = s3;
       end
     endcase
   end
   wire signed [XB+23:0] sh_wide = $signed({sh_value, 24'd0}) >>> sh_amount;
-  wire signed [RB-1:0]  shifted = sh_wide[RB-1:0];
+  reg  signed [RB-1:0]  shifted;
+  always @(posedge clk) begin
+    shifted <= sh_wide[RB-1:0];
+  end
 
   // The decay's slope, about v^2 a clock: 2^(2 lead_one - 38) (v^2 to 4 v^2), at least 1.
   wire [6:0]    slope_shift = {lead_one_reg, 1'b0} - 7'd38;

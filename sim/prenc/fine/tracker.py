@@ -68,9 +68,12 @@ LOAD = 64                  # clocks from the second step to the first velocity (
 MANEUVER = 1 << 8          # |bias| above 1 sigma
 
 # The sequence after a step (seq): the table's word (read, then registered once more:
-# a block RAM's output is slow), 12 multiplier clocks, 4 shifts.
+# a block RAM's output is slow), 12 multiplier clocks, 4 shifts (a gain a clock, the
+# shifter's output registered), each used the clock after its shift.
 S_READ, S_WORD, S_MUL = 1, 2, 3
-S_ACC, S_VEL, S_POS, S_BIAS = S_MUL + 12, S_MUL + 13, S_MUL + 14, S_MUL + 15
+S_SHIFT = S_MUL + 12
+S_ACC, S_VEL, S_POS, S_BIAS = S_SHIFT + 1, S_SHIFT + 2, S_SHIFT + 3, S_SHIFT + 4
+SHIFTED = (2, 1, 0, 3)     # the gain shifted at S_SHIFT, S_SHIFT + 1, ...
 
 
 def saturate(value: int, bits: int) -> int:
@@ -129,6 +132,7 @@ class Tracker:
         self.read = 0           # the block RAM's read register
         self.word = 0
         self.product = [0, 0, 0, 0]
+        self.shifted = 0        # the shifter's output, registered
         self.acc_corr = 0
         self.vel_corr = 0
         self.pos_corr = 0
@@ -187,23 +191,26 @@ class Tracker:
             self.read = self.words[self.address]
         elif seq == S_WORD:
             self.word = self.read
-        elif S_MUL <= seq < S_ACC:
+        elif S_MUL <= seq < S_SHIFT:
             bit = tg.MANTISSA_BITS - 1 - (seq - S_MUL)
             for i in range(4):
                 m, _ = self.field(i)
                 self.product[i] = 2 * self.product[i] + (self.e if (m >> bit) & 1 else 0)
-        elif seq == S_ACC:
-            self.acc_corr = shifter(self.product[2], self.field(2)[1])
+        shifted = self.shifted
+        if S_SHIFT <= seq < S_SHIFT + 4:
+            i = SHIFTED[seq - S_SHIFT]
+            self.shifted = shifter(self.product[i], self.field(i)[1])
+        if seq == S_ACC:
+            self.acc_corr = shifted
         elif seq == S_VEL:
-            r1 = shifter(self.product[1], self.field(1)[1])
-            self.vel_corr = wrap(r1 + (self.acc_corr >> (ACC_SHIFT - 5)), CORR_BITS)
-            self.pos_corr = wrap((r1 << 5) + (self.acc_corr >> (ACC_SHIFT - 9)), CORR_BITS)
+            self.vel_corr = wrap(shifted + (self.acc_corr >> (ACC_SHIFT - 5)), CORR_BITS)
+            self.pos_corr = wrap((shifted << 5) + (self.acc_corr >> (ACC_SHIFT - 9)), CORR_BITS)
         elif seq == S_POS:
-            self.pos_corr = wrap(self.pos_corr + shifter(self.product[0], self.field(0)[1]), CORR_BITS)
+            self.pos_corr = wrap(self.pos_corr + shifted, CORR_BITS)
         elif seq == S_BIAS:
-            z = clamp(shifter(self.product[3], self.field(3)[1]), BIAS_BITS)
+            z = clamp(shifted, BIAS_BITS)
             self.bias += (z - self.bias) >> 2
-        elif seq == APPLY:
+        if seq == APPLY:
             pos_n += self.pos_corr
             vel_n += self.vel_corr
             acc_n += self.acc_corr
