@@ -376,7 +376,8 @@ module prenc_wb #(
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
         A_PARAMS:           wb_dat_o <= {FILTER[15:0], 2'd0, TRACKER[0], ~ACCEL_FIT[0],
-                                         QUARTER_WINDOWS[0], CAL[0], FINE[0], FINE_BITS[3:0], N[4:0]};
+                                         QUARTER_WINDOWS[0], CAL[0], FINE[0], FINE_BITS[3:0],
+                                         N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};
         A_STATUS:           wb_dat_o <= {24'd0, status};
         A_POSITION:         wb_dat_o <= {{(30 - N){1'b0}}, position};
