@@ -243,6 +243,13 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 rows.append((f"{name} board top", n, _synth_line(synth, r)))
             except synth.FlowError as err:
                 rows.append((f"{name} board top", n, f"FAILED: {err}"))
+    # The ULX3S with the velocity from prenc_tracker (TRACKER = 1, the printed disc's table).
+    board = synth.BOARDS["ulx3s"]
+    try:
+        r = synth.board_build(board, 10, SIM_BUILD / "bench" / "synth" / "ulx3s-n10-tracker", tracker="printed")
+        rows.append(("ulx3s board top, TRACKER = 1", 10, _synth_line(synth, r)))
+    except synth.FlowError as err:
+        rows.append(("ulx3s board top, TRACKER = 1", 10, f"FAILED: {err}"))
     # The LiteX example: VexRiscv, prenc_wb and the firmware of sw/litex/ (scripts/litex_soc.py).
     for board in ("ulx3s", "icebreaker"):
         what = f"LiteX example SoC (VexRiscv minimal + prenc_wb), {board}"
