@@ -6,13 +6,15 @@ filter on the sync track's edges, beside prenc_velocity and the three baselines.
     python scripts/velocity_study.py                 # both discs, every row (about 15 min)
     python scripts/velocity_study.py --disc ideal --rows "600 rpm,ramp"
 
-This is not a model of an RTL block: it is floating point, and it is here to answer a
-design question before any RTL is written (docs/design-log.md, "A Kalman filter on the
-edges"). It runs the scenarios of `make bench`'s section 9 (prenc.virtual.fine_bench:
+Its two candidates are floating point, here to answer a design question before RTL is
+written (docs/design-log.md, "A Kalman filter on the edges"); the filter's equations are
+prenc.fine.tracker_gains', which computes prenc_tracker's table with them. It runs the scenarios of `make bench`'s section 9 (prenc.virtual.fine_bench:
 N = 10, 30 MHz), scores every estimator the same way (the velocity's error against the
 true speed at the clock it is read, RMS in per cent) and prints one Markdown table per
-disc: prenc_velocity's model (ours, quarter), the two candidates below, and the
-baselines.
+disc: prenc_velocity's model (ours, quarter), the two candidates below, the integer
+model of prenc_tracker (tracker: the scheduled filter as the RTL has it, prenc.fine.
+tracker, its table from prenc.fine.tracker_gains; `make bench` section 9 measures it as
+well), and the baselines.
 
 kalman: the state is the position (quarters), the velocity (quarters per clock) and the
 acceleration. At each of the decoder's steps the position is measured as the edge
@@ -50,11 +52,10 @@ from prenc.fine import tracker_gains  # noqa: E402
 from prenc.fine.tracker import Tracker  # noqa: E402
 from prenc.virtual import fine_bench as fb  # noqa: E402
 
-Q600 = 1e-23                            # jerk density at 600 rpm, quarters^2 / clock^5
-QEXP_LOW = 5.0                          # ... and as |v|^QEXP_LOW below 600 rpm
-QEXP = 2.0                              # the jerk density grows as |v|^QEXP
-V600 = 4 * 600 / 60 * (1 << fb.N) / fb.CLK_HZ   # 600 rpm in quarters per clock
-SIGMA = {"ideal": 0.01, "printed": 0.15}  # the disc's edge error, quarters RMS
+Q600, QEXP, QEXP_LOW = tracker_gains.Q600, tracker_gains.QEXP, tracker_gains.QEXP_LOW
+SIGMA = tracker_gains.SIGMA             # the disc's edge error, quarters RMS
+transition, process_noise = tracker_gains.transition, tracker_gains.process_noise
+update = tracker_gains.update
 PRIOR = (0.1, 1e-2, 1e-14)              # the first edge's variances: position, velocity, accel
 MANEUVER = (1.0, 1e4, 0.25)             # |innovations' mean| above [0] (in sigmas, an EMA of
                                         # weight [2]): the jerk density x [1] for the next edge
@@ -67,31 +68,7 @@ def stopped(velocity: float, clocks: int) -> bool:
 
 
 def jerk_density(v: float) -> float:
-    ratio = abs(v / V600)
-    return Q600 * ratio ** (QEXP if ratio >= 1 else QEXP_LOW)
-
-
-def transition(t: float) -> np.ndarray:
-    """Position, velocity and acceleration over t clocks."""
-    return np.array([[1.0, t, t * t / 2], [0.0, 1.0, t], [0.0, 0.0, 1.0]])
-
-
-def process_noise(q: float, t: float) -> np.ndarray:
-    """A white jerk of density q over t clocks."""
-    return q * np.array([[t ** 5 / 20, t ** 4 / 8, t ** 3 / 6],
-                         [t ** 4 / 8, t ** 3 / 3, t ** 2 / 2],
-                         [t ** 3 / 6, t ** 2 / 2, t]])
-
-
-def update(cov: np.ndarray, f: np.ndarray, noise: np.ndarray, v: float,
-           sigma: float) -> tuple[np.ndarray, np.ndarray, float]:
-    """One edge of the filter's covariance: predicted over f (with the process noise),
-    then measured at velocity v (a clock's quantization, v^2 / 12, and the disc's edge
-    error sigma). Returns the new covariance, the gains and the innovation's variance."""
-    cov = f @ cov @ f.T + noise
-    spread = cov[0, 0] + v * v / 12 + sigma ** 2
-    gain = cov[:, 0] / spread
-    return cov - np.outer(gain, cov[0, :]), gain, spread
+    return tracker_gains.jerk_density(v, fb.N, fb.CLK_HZ)
 
 
 def shown(velocity: float, accel: float, cw: bool, clocks: int) -> np.ndarray:
@@ -154,15 +131,7 @@ def table_gains(index: int, age: int, sigma: float) -> tuple[np.ndarray, float]:
     variance v^4 / 100), since the first interval gave it."""
     key = (index, sigma)
     if key not in _TABLE:
-        v = 2.0 ** (index / STEPS)
-        t = 1.0 / v
-        f, noise = transition(t), process_noise(jerk_density(v), t)
-        cov = np.diag([PRIOR[0], v * v, (v * v) ** 2 * 1e-2])
-        rows = []
-        for _ in range(AGES):
-            cov, gain, spread = update(cov, f, noise, v, sigma)
-            rows.append((gain, spread))
-        _TABLE[key] = rows
+        _TABLE[key] = tracker_gains.recursion(2.0 ** (index / STEPS), sigma, fb.N, fb.CLK_HZ, AGES)
     return _TABLE[key][min(age, AGES - 1)]
 
 
