@@ -4,20 +4,21 @@
 // and the clock by prenc.fine.tracker_gains; docs/fine.md).
 //
 // Units: quarters and clocks. The state is fixed point:
-//   pos   the predicted position less the last edge crossed, 2^-40 quarter (+-4)
+//   pos   the predicted position less the last edge crossed, 2^-40 quarter (+-8)
 //   vel   quarters per clock, 2^-40 (+-2)
 //   acc   quarters per clock^2, 2^-60
 // Every clock pos += vel, vel += acc >>> 20. On a step of the decoder (d: +1 or -1 for
 // the next edge the same way, 0 for the same edge back after a reversal):
 // - the innovation e = d - (pos + vel), 2^-20 quarter (saturated), and pos is
 //   referred to the new edge (pos + vel - d);
-// - the gains: the table's word at the column of |vel| (2 an octave) and the bin of
-//   the filter's age (its updates since the start; with a maneuver seen, the age is
-//   halved first, not below 4). A maneuver: the innovations' running mean (weight
-//   1/4, in standard deviations: the gain gz) above 1;
+// - the gains: the table's word (read, then registered once more) at the column of
+//   |vel| of the clock before (2 an octave) and the bin of the filter's age (its
+//   updates since the start; with a maneuver seen, the age is halved first, not below
+//   4). A maneuver: the innovations' running mean (weight 1/4, in standard
+//   deviations: the gain gz) above 1;
 // - four serial multipliers, a mantissa bit a clock (12 clocks), then one shifter, a
-//   gain a clock; the corrections land APPLY = 32 clocks after the step as if they had
-//   at the step: acc += g2 e, vel += g1 e + 32 (g2 e >>> 20),
+//   gain a clock (registered); the corrections land APPLY = 32 clocks after the step
+//   as if they had at the step: acc += g2 e, vel += g1 e + 32 (g2 e >>> 20),
 //   pos += g0 e + 32 g1 e + 512 (g2 e >>> 20). A step while an update is under way
 //   is referred but measures nothing.
 // - The start: the first step (after reset, a stop, an illegal transition) is an

@@ -28,7 +28,7 @@ from prenc.fine import tracker_gains
 from prenc.fine.tracker import Tracker
 from prenc.virtual.fine_bench import sync_stream
 from prenc.virtual.trajectory import Trajectory
-from runner import SIMULATORS, gains_file, run
+from runner import SIM_BUILD, SIMULATORS, gains_file, run
 
 TOPLEVEL = "prenc_tracker"
 N, CLK_HZ, TIMER_BITS = 6, 1e5, 12
@@ -113,3 +113,39 @@ def test_prenc_tracker(simulator):
     path = str(gains_file(N, 1e5))
     run(__file__, TOPLEVEL, simulator, parameters={"TIMER_BITS": TIMER_BITS, "GAIN_FILE": path},
         extra_env={"PRENC_GAIN_FILE": path})
+
+
+def bad_gain_file(case: str) -> str:
+    """A gain table that is missing, or one word short."""
+    path = SIM_BUILD / "roms" / f"prenc_tracker_gains_{case}.hex"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if case == "missing":
+        path.unlink(missing_ok=True)
+    else:
+        path.write_text("".join(gains_file(N, CLK_HZ).read_text().splitlines(keepends=True)[:-1]))
+    return str(path)
+
+
+@pytest.mark.parametrize("simulator", SIMULATORS)
+@pytest.mark.parametrize("case, message", [("missing", "cannot be opened"),
+                                           ("short", "1 of 1280 words missing")])
+def test_a_bad_gain_file_stops_the_simulation(simulator, case, message, capfd):
+    path = bad_gain_file(case)
+    with pytest.raises(SystemExit):
+        run(__file__, TOPLEVEL, simulator, parameters={"TIMER_BITS": TIMER_BITS, "GAIN_FILE": path},
+            extra_env={"PRENC_GAIN_FILE": str(gains_file(N, CLK_HZ))})
+    text = "".join(capfd.readouterr())
+    assert f'GAIN_FILE "{path}"' in text and message in text
+
+
+def test_the_model_rejects_a_bad_gain_file(tmp_path):
+    short = tmp_path / "short.hex"
+    short.write_text("0\n" * (tracker_gains.COLUMNS * tracker_gains.BINS - 1))
+    with pytest.raises(ValueError, match="1279 words"):
+        tracker_gains.read(short)
+    wide = tmp_path / "wide.hex"
+    wide.write_text("1" + "0" * 18 + "\n" + "0\n" * (tracker_gains.COLUMNS * tracker_gains.BINS - 1))
+    with pytest.raises(ValueError, match="more than 72 bits"):
+        tracker_gains.read(wide)
+    with pytest.raises(ValueError, match="not 1280"):
+        Tracker([0] * 10)
