@@ -15,12 +15,14 @@ itself: d = x - x_last is +1, -1 or 0):
 - the innovation e = d - (pos + vel), the measured edge less the predicted position,
   in 2^-20 quarter (saturated to +-4 quarters); pos is referred to the new edge
   (pos + vel - d);
-- the gains: a word of the table, at the column of |vel| (2 an octave) and the bin of
-  the filter's age (the updates since it started; each update while a maneuver is
-  seen halves the age first, not below AGE_FLOOR). A maneuver: the innovations'
-  running mean (weight 1/4, in their standard deviations, the table's gz) is above 1;
-- one serial multiplier per gain, a mantissa bit a clock (12 clocks), then one shifter
-  for all four, a gain a clock;
+- the gains: a word of the table, at the column of |vel| of the clock before (2 an
+  octave; its leading one is a register) and the bin of the filter's age (the updates
+  since it started; each update while a maneuver is seen halves the age first, not
+  below AGE_FLOOR). A maneuver: the innovations' running mean (weight 1/4, in their
+  standard deviations, the table's gz) is above 1;
+- the table's word takes two clocks (the block RAM's read, registered once more); one
+  serial multiplier per gain, a mantissa bit a clock (12 clocks), then one shifter for
+  all four, a gain a clock (its output registered);
 - the corrections land APPLY = 32 clocks after the step, as if they had at the step
   and the state had moved since: acc += g2 e, vel += g1 e + 32 (g2 e >> 20),
   pos += g0 e + 32 g1 e + 512 (g2 e >> 20) (32 32 / 2 for 32 31 / 2: shifts, no
@@ -30,26 +32,24 @@ itself: d = x - x_last is +1, -1 or 0):
 The start: the first step (after reset, a stop or an illegal transition) is an anchor;
 the second one gives the velocity, one quarter over the clocks between them (a serial
 division, prenc_divider), LOAD = 64 clocks after the step, the position moved on by as
-many clocks (a shift); the filter starts at age 0 then. Steps before that are referred (pos -= d, so that
-the position is right when the velocity loads); a reversal makes the step the anchor
-again.
+many clocks (a shift); the filter starts at age 0 then. Steps before that are referred
+(pos -= d, so that the position is right when the velocity loads); a reversal makes the
+step the anchor again.
 
 The output (`velocity`, a clock after the state): the state's velocity, 0 unless it has
 the sign of the last step; once the predicted position is 2 quarters past the last edge
 (an edge overdue), it decays linearly: a level starting at the velocity shown falls by
-about v^2 a clock (a power of two from |vel|'s leading one p, 2^(2p - 38) in 2^-40: v^2
-to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter periods after the edge; there, or after no step for
-2^TIMER_BITS - 1 clocks, the disc has stopped: the velocity reads 0 (valid) and the next
-step is an anchor. An illegal transition drops the velocity (`valid` 0) until the next
-estimate.
+about v^2 a clock (a power of two from the leading one p of |vel| of the clock before,
+2^(2p - 38) in 2^-40: v^2 to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter
+periods after the edge; there, or after no step for 2^TIMER_BITS - 1 clocks, the disc
+has stopped: the velocity reads 0 (valid) and the next step is an anchor. An illegal
+transition drops the velocity (`valid` 0) until the next estimate.
 """
 
 from __future__ import annotations
 
 from . import tracker_gains as tg
 from .velocity import DIV_CLOCKS, FRAC, Divider
-
-assert DIV_CLOCKS < 64
 
 POS_BITS = 44              # pos: signed, 2^-40 quarter (+-8 quarters)
 CORR_BITS = 46             # the position's and the velocity's corrections, 2^-40
@@ -58,13 +58,12 @@ ACC_BITS = 52              # acc: signed, 2^-60 quarter per clock^2
 STATE_FRAC = 40
 ACC_SHIFT = 20             # acc's extra fractional bits
 E_BITS = 23                # the innovation: signed, 2^-20 quarter
-PRODUCT_BITS = E_BITS + tg.MANTISSA_BITS
 RESULT_BITS = 52           # a correction from the shifter
 BIAS_BITS = 16             # the innovations' running mean: signed, 2^-8 sigma
-AGE_BITS = 10
 AGE_FLOOR = 4
 APPLY = 32                 # clocks from the step to the corrections
-LOAD = 64                  # clocks from the second step to the first velocity (> DIV_CLOCKS)
+LOAD = 64                  # clocks from the second step to the first velocity
+assert DIV_CLOCKS < LOAD   # the division is done by then
 MANEUVER = 1 << 8          # |bias| above 1 sigma
 
 # The sequence after a step (seq): the table's word (read, then registered once more:
