@@ -2,6 +2,7 @@
 // prenc_fine: fine position and velocity beside the core (docs/fine.md).
 //
 //   prenc_core: sync_step, direction, sync_illegal -> prenc_velocity -> velocity, accel
+//                                  (TRACKER = 1: prenc_tracker)
 //               pos_hyb, pos_valid ------------------> prenc_fine_position -> fine_pos
 //
 // The core stays the judge of the position: fine_pos's quarter is pos_hyb's while
@@ -24,7 +25,8 @@
 // Latency: fine_pos is OUTPUT_DELAY = 3 clocks after the core's pos_hyb (extrapolated
 // over the clocks from the pins by LOOKAHEAD_HALVES); the velocity updates FULL_CLOCKS
 // after a window closes and integrates its acceleration every clock in between
-// (prenc_velocity).
+// (prenc_velocity); with TRACKER = 1 an edge's update lands 32 clocks after it,
+// compensated to its instant, and the output is registered (prenc_tracker).
 //
 // Parameters
 //   N, FINE_BITS, LOOKAHEAD_HALVES   prenc_fine_position's (N 2..24, F 0..8, 0..255)
