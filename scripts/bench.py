@@ -509,11 +509,9 @@ def fine_logic_rows() -> list[str]:
     sys.path.insert(0, str(REPO / "tb"))
     from yosys import synthesize
 
-    from prenc.fine import tracker_gains
+    from runner import gains_file
 
-    gains = REPO / "sim_build" / "roms" / "prenc_tracker_gains_n10_30mhz_ideal.hex"
-    gains.parent.mkdir(parents=True, exist_ok=True)
-    tracker_gains.write(gains, 10, 30e6)
+    gains = gains_file(10, 30e6)
     rows = []
     for family in ("ice40", "ecp5"):
         cells = []

@@ -52,10 +52,7 @@ from prenc.fine import tracker_gains  # noqa: E402
 from prenc.fine.tracker import Tracker  # noqa: E402
 from prenc.virtual import fine_bench as fb  # noqa: E402
 
-Q600, QEXP, QEXP_LOW = tracker_gains.Q600, tracker_gains.QEXP, tracker_gains.QEXP_LOW
 SIGMA = tracker_gains.SIGMA             # the disc's edge error, quarters RMS
-transition, process_noise = tracker_gains.transition, tracker_gains.process_noise
-update = tracker_gains.update
 PRIOR = (0.1, 1e-2, 1e-14)              # the first edge's variances: position, velocity, accel
 MANEUVER = (1.0, 1e4, 0.25)             # |innovations' mean| above [0] (in sigmas, an EMA of
                                         # weight [2]): the jerk density x [1] for the next edge
@@ -103,12 +100,12 @@ def kalman_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
             state, cov = np.array([float(x), 0.0, 0.0]), np.diag(PRIOR)
         else:
             t = float(c - last)
-            noise = process_noise(jerk_density(state[1]), t)
+            noise = tracker_gains.process_noise(jerk_density(state[1]), t)
             if abs(bias) > MANEUVER[0]:
                 noise = noise * MANEUVER[1]
-            f = transition(t)
+            f = tracker_gains.transition(t)
             state = f @ state
-            cov, gain, spread = update(cov, f, noise, state[1], sigma)
+            cov, gain, spread = tracker_gains.update(cov, f, noise, state[1], sigma)
             innovation = x - state[0]
             bias += (innovation / math.sqrt(spread) - bias) * MANEUVER[2]
             state = state + gain * innovation
@@ -148,7 +145,7 @@ def scheduled_velocity(sync: fb.Sync, sigma: float) -> np.ndarray:
         elif age < 0:
             state, age = np.array([float(x), (x - previous) / (c - last), 0.0]), 0
         else:
-            state = transition(float(c - last)) @ state
+            state = tracker_gains.transition(float(c - last)) @ state
             if abs(bias) > MANEUVER[0]:
                 age = max(min(age, AGES - 1) // 2, AGE_FLOOR)
             index = int(round(STEPS * math.log2(max(abs(state[1]), 1e-9))))
@@ -230,7 +227,7 @@ def main() -> int:
     args = parser.parse_args()
     rows = args.rows.split(",") if args.rows else None
     for disc in (("ideal", "printed") if args.disc == "both" else (args.disc,)):
-        print(f"\nVelocity error, % RMS (N = {fb.N}, {fb.CLK_HZ / 1e6:g} MHz; Q600 = {Q600:g}, "
+        print(f"\nVelocity error, % RMS (N = {fb.N}, {fb.CLK_HZ / 1e6:g} MHz; Q600 = {tracker_gains.Q600:g}, "
               f"sigma = {SIGMA[disc]} quarter)\n", flush=True)
         study(disc, rows)
     return 0

@@ -49,7 +49,7 @@ transition drops the velocity (`valid` 0) until the next estimate.
 from __future__ import annotations
 
 from . import tracker_gains as tg
-from .velocity import DIV_CLOCKS, FRAC, Divider
+from .velocity import DIV_CLOCKS, FRAC, Divider, saturate
 
 POS_BITS = 44              # pos: signed, 2^-40 quarter (+-8 quarters)
 CORR_BITS = 46             # the position's and the velocity's corrections, 2^-40
@@ -73,12 +73,6 @@ S_READ, S_WORD, S_MUL = 1, 2, 3
 S_SHIFT = S_MUL + 12
 S_ACC, S_VEL, S_POS, S_BIAS = S_SHIFT + 1, S_SHIFT + 2, S_SHIFT + 3, S_SHIFT + 4
 SHIFTED = (2, 1, 0, 3)     # the gain shifted at S_SHIFT, S_SHIFT + 1, ...
-
-
-def saturate(value: int, bits: int) -> int:
-    """Saturated to a signed value of `bits` bits, symmetric (-(2^(bits-1) - 1) at least)."""
-    top = (1 << (bits - 1)) - 1
-    return max(-top, min(top, value))
 
 
 def clamp(value: int, bits: int) -> int:
