@@ -13,9 +13,11 @@
 //   referred to the new edge (pos + vel - d);
 // - the gains: the table's word (read, then registered once more) at the column of
 //   |vel| of the clock before (2 an octave) and the bin of the filter's age (its
-//   updates since the start; with a maneuver seen, the age is halved first, not below
-//   4). A maneuver: the innovations' running mean (weight 1/4, in standard
-//   deviations: the gain gz) above 1;
+//   updates since the start). A maneuver halves the age first, not below 4: the
+//   innovations' running mean (weight 1/4, in standard deviations: the gain gz) above
+//   1. A jump sets it to 4: the last update's innovation above 4 standard deviations
+//   (a change of acceleration); the filter then chases: its age holds while the
+//   running mean stays above 1/2;
 // - four serial multipliers, a mantissa bit a clock (12 clocks), then one shifter, a
 //   gain a clock (registered); the corrections land APPLY = 32 clocks after the step
 //   as if they had at the step: acc += g2 e, vel += g1 e + 32 (g2 e >>> 20),
@@ -136,6 +138,8 @@ module prenc_tracker #(
   reg signed [AB-1:0] acc_reg;
   reg [9:0]           age_reg;
   reg signed [ZB-1:0] bias_reg;
+  reg                 jump_reg;
+  reg                 chase_reg;
   reg [5:0]           seq_reg;
   reg signed [EB-1:0] e_reg;
   reg [10:0]          address_reg;
@@ -197,11 +201,13 @@ module prenc_tracker #(
   wire [6:0]    col_raw = {lead_one_reg, half_reg};       // 2 lead_one + half
   wire [4:0]    col = (col_raw < 7'd38) ? 5'd0 : (col_raw > 7'd69) ? 5'd31 : col_raw[4:0] - 5'd6;
 
-  // The age, halved on a maneuver (not below 4), and its bin (0..15, then 4 an octave).
+  // The age: 4 after a jump, halved on a maneuver (not below 4); and its bin (0..15,
+  // then 4 an octave). While chasing, the age holds.
   wire [ZB-1:0] bias_abs = bias_reg[ZB-1] ? -bias_reg : bias_reg;
   wire          maneuver = bias_abs > 16'd256;
+  wire          chase    = jump_reg || (chase_reg && bias_abs > 16'd128);
   wire [9:0]    age_half = {1'b0, age_reg[9:1]};
-  wire [9:0]    age_used = !maneuver ? age_reg : (age_half < 10'd4) ? 10'd4 : age_half;
+  wire [9:0]    age_used = jump_reg ? 10'd4 : !maneuver ? age_reg : (age_half < 10'd4) ? 10'd4 : age_half;
   reg  [5:0]    age_bin;
   always @(*) begin
     if (age_used[9])      age_bin = 6'd36 + {4'd0, age_used[8:7]};
@@ -318,6 +324,7 @@ module prenc_tracker #(
   wire signed [ZB-1:0] z          = z_fits ? shifted[ZB-1:0]
                                            : {shifted[RB-1], {(ZB - 1){!shifted[RB-1]}}};
   wire signed [ZB+1:0] z_diff     = {{2{z[ZB-1]}}, z} - {{2{bias_reg[ZB-1]}}, bias_reg};
+  wire                 z_jump     = (z > $signed(16'sd1024)) || (z < -$signed(16'sd1024));
 
   reg [1:0]           phase_n;
   reg                 valid_n;
@@ -328,6 +335,8 @@ module prenc_tracker #(
   reg signed [AS-1:0] acc_n;
   reg [9:0]           age_n;
   reg signed [ZB-1:0] bias_n;
+  reg                 jump_n;
+  reg                 chase_n;
   reg [5:0]           seq_n;
   reg signed [EB-1:0] e_n;
   reg [10:0]          address_n;
@@ -355,6 +364,8 @@ module prenc_tracker #(
     acc_n      = acc_w;
     age_n      = age_reg;
     bias_n     = bias_reg;
+    jump_n     = jump_reg;
+    chase_n    = chase_reg;
     seq_n      = (seq_reg != 6'd0) ? seq_reg + 6'd1 : 6'd0;
     e_n        = e_reg;
     address_n  = address_reg;
@@ -387,7 +398,10 @@ module prenc_tracker #(
         pos_corr_n = {shifted[CB-6:0], 5'd0} + acc_corr_p;
       end
       S_POS: pos_corr_n = pos_corr_reg + shifted[CB-1:0];
-      S_BIAS: bias_n = bias_reg + z_diff[ZB+1:2];
+      S_BIAS: begin
+        bias_n = bias_reg + z_diff[ZB+1:2];
+        jump_n = z_jump;
+      end
       S_APPLY: begin
         pos_n = pos_n + {{(SB - CB){pos_corr_reg[CB-1]}}, pos_corr_reg};
         vel_n = vel_n + {{(SB - CB){vel_corr_reg[CB-1]}}, vel_corr_reg};
@@ -406,6 +420,8 @@ module prenc_tracker #(
       valid_n   = 1'b1;
       age_n     = 10'd0;
       bias_n    = {ZB{1'b0}};
+      jump_n    = 1'b0;
+      chase_n   = 1'b0;
     end
 
     // An overdue edge: the output decays to 0, a stop.
@@ -451,7 +467,8 @@ module prenc_tracker #(
         if (seq_reg == 6'd0) begin
           e_n        = e_sat;
           address_n  = address;
-          age_n      = (age_used == 10'd1023) ? age_used : age_used + 10'd1;
+          chase_n    = chase;
+          age_n      = (chase || age_used == 10'd1023) ? age_used : age_used + 10'd1;
           product0_n = {XB{1'b0}};
           product1_n = {XB{1'b0}};
           product2_n = {XB{1'b0}};
@@ -494,6 +511,8 @@ module prenc_tracker #(
     acc_reg      <= acc_sat;
     age_reg      <= age_n;
     bias_reg     <= bias_n;
+    jump_reg     <= jump_n;
+    chase_reg    <= chase_n;
     seq_reg      <= seq_n;
     e_reg        <= e_n;
     address_reg  <= address_n;
@@ -520,6 +539,8 @@ module prenc_tracker #(
       acc_reg      <= {AB{1'b0}};
       age_reg      <= 10'd0;
       bias_reg     <= {ZB{1'b0}};
+      jump_reg     <= 1'b0;
+      chase_reg    <= 1'b0;
       seq_reg      <= 6'd0;
       e_reg        <= {EB{1'b0}};
       address_reg  <= 11'd0;

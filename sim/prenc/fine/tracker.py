@@ -17,9 +17,12 @@ itself: d = x - x_last is +1, -1 or 0):
   (pos + vel - d);
 - the gains: a word of the table, at the column of |vel| of the clock before (2 an
   octave; its leading one is a register) and the bin of the filter's age (the updates
-  since it started; each update while a maneuver is seen halves the age first, not
-  below AGE_FLOOR). A maneuver: the innovations' running mean (weight 1/4, in their
-  standard deviations, the table's gz) is above 1;
+  since it started). A maneuver halves the age first, not below AGE_FLOOR: the
+  innovations' running mean (weight 1/4, in their standard deviations, the table's gz)
+  above 1. A jump sets it to AGE_FLOOR: the last update's innovation above 4 standard
+  deviations (a change of acceleration, as where a ramp starts); the filter then
+  chases: its age holds, not counting this update, while the running mean stays above
+  1/2;
 - the table's word takes two clocks (the block RAM's read, registered once more); one
   serial multiplier per gain, a mantissa bit a clock (12 clocks), then one shifter for
   all four, a gain a clock (its output registered);
@@ -64,7 +67,9 @@ AGE_FLOOR = 4
 APPLY = 32                 # clocks from the step to the corrections
 LOAD = 64                  # clocks from the second step to the first velocity
 assert DIV_CLOCKS < LOAD   # the division is done by then
-MANEUVER = 1 << 8          # |bias| above 1 sigma
+MANEUVER = 1 << 8          # |bias| above 1 sigma: the age halves
+JUMP = 4 << 8              # the last update's |z| above 4 sigma: the age drops to AGE_FLOOR
+CHASE = 1 << 7             # after a jump, the age holds while |bias| is above 1/2 sigma
 
 # The sequence after a step (seq): the table's word (read, then registered once more:
 # a block RAM's output is slow), 12 multiplier clocks, 4 shifts (a gain a clock, the
@@ -119,6 +124,8 @@ class Tracker:
         self.acc = 0
         self.age = 0
         self.bias = 0
+        self.jump = 0
+        self.chase = 0
         self.seq = 0
         self.e = 0
         self.address = 0
@@ -203,6 +210,7 @@ class Tracker:
         elif seq == S_BIAS:
             z = clamp(shifted, BIAS_BITS)
             self.bias += (z - self.bias) >> 2
+            self.jump = int(abs(z) > JUMP)
         if seq == APPLY:
             pos_n += self.pos_corr
             vel_n += self.vel_corr
@@ -215,7 +223,7 @@ class Tracker:
             v = quotient >> (FRAC - STATE_FRAC)
             vel_n = -v if self.negative else v
             pos_n, acc_n = self.pos + vel_n * LOAD, 0
-            self.phase, self.valid, self.age, self.bias = self.TRACK, 1, 0, 0
+            self.phase, self.valid, self.age, self.bias, self.jump, self.chase = self.TRACK, 1, 0, 0, 0, 0
 
         # An overdue edge: the output decays to 0, a stop.
         stop = self.since == self.timer_max and phase != self.NONE
@@ -251,10 +259,13 @@ class Tracker:
                     e = ((d << STATE_FRAC) - predicted) >> (STATE_FRAC - tg.INNOVATION_FRAC)
                     self.e = clamp(e, E_BITS)
                     age = self.age
-                    if abs(self.bias) > MANEUVER:
+                    if self.jump:
+                        age = AGE_FLOOR
+                    elif abs(self.bias) > MANEUVER:
                         age = max(age >> 1, AGE_FLOOR)
                     self.address = tg.column(self.class_speed) * tg.BINS + tg.age_bin(age)
-                    self.age = min(age + 1, tg.AGE_MAX)
+                    self.chase = int(self.jump or (self.chase and abs(self.bias) > CHASE))
+                    self.age = age if self.chase else min(age + 1, tg.AGE_MAX)
                     self.product = [0, 0, 0, 0]
                     seq_n = S_READ
             elif phase == self.ANCHOR and not reversal and not stop:

@@ -6,7 +6,8 @@ The gain table is prenc.fine.tracker_gains's for N = 6 at 100 kHz (600 rpm is 0.
 quarter per clock), so that the stimulus's speeds cross most of the table's columns.
 The stimulus is what the core gives the block on a disc that starts at rest, turns
 steadily long enough for the filter's age to reach the table's last bins, changes
-speed at once (a maneuver: the age is halved), turns faster than an update takes (steps
+speed at once (a maneuver: a jump of the innovation sets the age back and the filter
+chases; the innovations' mean halves the age), turns faster than an update takes (steps
 that only refer the position), reverses smoothly and at once, wanders, stops (an edge
 overdue: the decay to 0) and rests, with a lone step in the rest (an anchor and no
 second step: the time-out); a few illegal transitions
@@ -76,21 +77,25 @@ async def matches_the_model_clock_by_clock(dut):
     model = Tracker(tracker_gains.read(os.environ["PRENC_GAIN_FILE"]), timer_bits=TIMER_BITS)
     names = ("step", "step_cw", "illegal")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
-    seen = {"updates": 0, "referred only": 0, "maneuvers": 0, "decays": 0, "stops": 0,
+    seen = {"updates": 0, "referred only": 0, "maneuvers": 0, "jumps": 0, "chases": 0,
+            "decays": 0, "stops": 0,
             "time-outs": 0, "first velocities": 0, "steps while dividing": 0}
     columns, bins = set(), set()
     data = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in data)))
-        before = (model.phase, model.seq, model.decaying, model.bias, model.since)
+        before = (model.phase, model.seq, model.decaying, model.bias, model.since, model.jump,
+                  model.chase)
         model.clock(now["step"], now["step_cw"], now["illegal"])
-        phase, seq, decaying, bias, since = before
+        phase, seq, decaying, bias, since, jump, chase = before
         if now["step"] and phase == model.TRACK:
             if seq == 0 and model.seq:
                 seen["updates"] += 1
                 columns.add(model.address // tracker_gains.BINS)
                 bins.add(model.address % tracker_gains.BINS)
-                seen["maneuvers"] += int(abs(bias) > 256)
+                seen["maneuvers"] += int(abs(bias) > 256 and not jump)
+                seen["jumps"] += jump
+                seen["chases"] += int(chase and not jump and model.chase)   # the age held
             elif seq:
                 seen["referred only"] += 1
         seen["steps while dividing"] += int(now["step"] and phase == model.DIVIDE
