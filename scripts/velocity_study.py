@@ -13,8 +13,9 @@ N = 10, 30 MHz), scores every estimator the same way (the velocity's error again
 true speed at the clock it is read, RMS in per cent) and prints one Markdown table per
 disc: prenc_velocity's model (ours, quarter), the two candidates below, the integer
 model of prenc_tracker (tracker: the scheduled filter as the RTL has it, prenc.fine.
-tracker, its table from prenc.fine.tracker_gains; `make bench` section 9 measures it as
-well), and the baselines.
+tracker, its table from prenc.fine.tracker_gains, and with its answer to a jump of the
+innovation, which the scheduled form here does not have; `make bench` section 9 measures
+it as well), and the baselines.
 
 kalman: the state is the position (quarters), the velocity (quarters per clock) and the
 acceleration. At each of the decoder's steps the position is measured as the edge
