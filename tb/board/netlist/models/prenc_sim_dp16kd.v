@@ -5,6 +5,10 @@
 // use, and stops the simulation on any other:
 //   - DATA_WIDTH_A/B 18 (1,024 words: address ADx[13:4], byte enables ADx[1:0] on
 //     writes) and 9 (2,048 words: address ADx[13:3]);
+//   - both 36, the pseudo-dual-port mode Yosys's brams_map_16kd.v makes of a wide
+//     ROM (512 words: port B reads at ADB[13:5], the word's low 18 bits on DOA and its
+//     high 18 on DOB; each word is two 18-bit entries of the INITVALs, low first);
+//     port A would write it, which is not modelled: a write stops the simulation;
 //   - WRITEMODE NORMAL (the output holds on a write), WRITETHROUGH (shows the new
 //     word), READBEFOREWRITE (shows the old one);
 //   - REGMODE NOREG (the word read shows after the clock) and OUTREG (one clock more,
@@ -197,13 +201,14 @@ module DP16KD (
 
   reg [17:0] mem [0:1023];
   integer row, word;
+  localparam WIDE = (DATA_WIDTH_A == 36) && (DATA_WIDTH_B == 36);
   initial begin
-    if (DATA_WIDTH_A != 18 && DATA_WIDTH_A != 9) begin
-      $display("ERROR: %m: DP16KD model: DATA_WIDTH_A = %0d is not modelled (18, 9)", DATA_WIDTH_A);
+    if (DATA_WIDTH_A != 18 && DATA_WIDTH_A != 9 && !WIDE) begin
+      $display("ERROR: %m: DP16KD model: DATA_WIDTH_A = %0d is not modelled (18, 9; 36 with B)", DATA_WIDTH_A);
       $finish(1);
     end
-    if (DATA_WIDTH_B != 18 && DATA_WIDTH_B != 9) begin
-      $display("ERROR: %m: DP16KD model: DATA_WIDTH_B = %0d is not modelled (18, 9)", DATA_WIDTH_B);
+    if (DATA_WIDTH_B != 18 && DATA_WIDTH_B != 9 && !WIDE) begin
+      $display("ERROR: %m: DP16KD model: DATA_WIDTH_B = %0d is not modelled (18, 9; 36 with A)", DATA_WIDTH_B);
       $finish(1);
     end
     if (CLKAMUX != "CLKA" || CLKBMUX != "CLKB") begin
@@ -271,7 +276,6 @@ module DP16KD (
     else if (OCEA) out_a <= latch_a;
   end
 
-  assign doa = (REGMODE_A == "OUTREG") ? out_a : latch_a;
 
   // Port B.
   wire        ce_b   = CEB & (cs_decode(CSDECODE_B) == {CSB2, CSB1, CSB0});
@@ -313,7 +317,34 @@ module DP16KD (
     else if (OCEB) out_b <= latch_b;
   end
 
-  assign dob = (REGMODE_B == "OUTREG") ? out_b : latch_b;
+  // The 36-bit mode: port B reads both halves of a word; port A is a ROM's (no writes).
+  wire [8:0]  word_w  = adb[13:5];
+  reg  [35:0] latch_w;
+  reg  [35:0] out_w;
+  initial latch_w = 36'd0;
+  initial out_w   = 36'd0;
+
+  always @(posedge CLKB or posedge arst_b) begin
+    if (arst_b) latch_w <= 36'd0;
+    else if (ce_b && RSTB) latch_w <= 36'd0;
+    else if (ce_b) latch_w <= {mem[{word_w, 1'b1}], mem[{word_w, 1'b0}]};
+  end
+
+  always @(posedge CLKB or posedge arst_b) begin
+    if (arst_b || RSTB) out_w <= 36'd0;
+    else if (OCEB) out_w <= latch_w;
+  end
+
+  always @(posedge CLKA) begin
+    if (WIDE && ce_a && WEA && (ada[3:0] != 4'd0)) begin
+      $display("ERROR: %m: DP16KD model: a write in the 36-bit mode is not modelled");
+      $finish(1);
+    end
+  end
+
+  wire [35:0] wide_out = (REGMODE_B == "OUTREG") ? out_w : latch_w;
+  assign doa = WIDE ? wide_out[17:0] : (REGMODE_A == "OUTREG") ? out_a : latch_a;
+  assign dob = WIDE ? wide_out[35:18] : (REGMODE_B == "OUTREG") ? out_b : latch_b;
 
 endmodule
 
