@@ -559,9 +559,10 @@ def cal_section() -> bool:
           f"{zero:+.5f} slot from the shaft's (taken off the calibrated errors below)")
     print("\n   c. Applied: position error in slots (RMS / max), velocity error in % (RMS / max)")
     print("      (calibrated: the default full-cycle windows; quarter: QUARTER_WINDOWS = 1, WINDOW "
-          f"{fb.QUARTER_WINDOW}, with the table)")
+          f"{fb.QUARTER_WINDOW}; tracker: TRACKER = 1, the ideal disc's gain table; all with the table)")
     print(f"   {'scenario':<34} {'coarse':>15} {'uncalibrated pos':>17} {'uncalibrated vel %':>19} "
-          f"{'calibrated pos':>17} {'calibrated vel %':>17} {'quarter pos':>17} {'quarter vel %':>17}")
+          f"{'calibrated pos':>17} {'calibrated vel %':>17} {'quarter pos':>17} {'quarter vel %':>17} "
+          f"{'tracker pos':>17} {'tracker vel %':>17}")
     rows = {}
     for case in fb.cases():
         r = cb.evaluate(case, result.table.c, zero)
@@ -572,7 +573,9 @@ def cal_section() -> bool:
               f"{r['calibrated'].fine[0]:>9.5f}/{r['calibrated'].fine[1]:.4f} "
               f"{r['calibrated'].velocity[0]:>9.4f}/{r['calibrated'].velocity[1]:.3f} "
               f"{r['calibrated quarter'].fine[0]:>9.5f}/{r['calibrated quarter'].fine[1]:.4f} "
-              f"{r['calibrated quarter'].velocity[0]:>9.4f}/{r['calibrated quarter'].velocity[1]:.3f}")
+              f"{r['calibrated quarter'].velocity[0]:>9.4f}/{r['calibrated quarter'].velocity[1]:.3f} "
+              f"{r['calibrated tracker'].fine[0]:>9.5f}/{r['calibrated tracker'].fine[1]:.4f} "
+              f"{r['calibrated tracker'].velocity[0]:>9.4f}/{r['calibrated tracker'].velocity[1]:.3f}")
     print(f"   ({time.perf_counter() - t0:.0f} s)")
 
     def verdict(ok: bool) -> str:
@@ -591,6 +594,10 @@ def cal_section() -> bool:
     print(f"   steady 10 to 10,000 rpm: fine position <= 1/128 slot RMS: worst {worst_pos:.5f}: "
           f"{verdict(worst_pos <= 1 / 128)}; velocity ripple <= 0.1 %: worst {worst_vel:.4f} % max: "
           f"{verdict(worst_vel <= 0.1)}")
+    t_pos = max(rows[k]["calibrated tracker"].fine[0] for k in steady)
+    t_vel = max(rows[k]["calibrated tracker"].velocity[1] for k in steady)
+    print(f"   the same with TRACKER = 1: fine position worst {t_pos:.5f}: {verdict(t_pos <= 1 / 128)}; "
+          f"velocity worst {t_vel:.4f} % max: {verdict(t_vel <= 0.1)}")
     print(f"   converges in <= 10 turns with +-2 % ripple at {cb.CAL_RIPPLE[1]:.0f} Hz, {cb.CAL_RPM:.0f} rpm: "
           f"{turns} turns: {verdict(turns is not None and turns <= 10)}")
     return failed

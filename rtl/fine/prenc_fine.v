@@ -15,9 +15,10 @@
 //   cycle's and the three before: pos_hyb follows the decoder by 4 clocks), goes to
 //   the table, which gives c[q] and c[q + 1] one clock later, registered once more
 //   (the block RAM's output is slow);
-// - so prenc_velocity takes the decoder's step, direction and illegal transition two
-//   clocks late, with those corrections, and prenc_fine_position takes them 2 clocks
-//   later again, when pos_hyb shows that quarter;
+// - so prenc_velocity (or prenc_tracker) takes the decoder's step, direction and
+//   illegal transition two clocks late, with those corrections, and
+//   prenc_fine_position takes them 2 clocks later again, when pos_hyb shows that
+//   quarter;
 // - the corrections count only while the table holds both words and pos_valid held
 //   when the quarter was asked (else 0: the nominal edges).
 // Model: prenc.fine.fine.Fine.
@@ -33,8 +34,8 @@
 //   WINDOW, TIMER_BITS, QUARTER_WINDOWS, ACCEL_FIT   prenc_velocity's (2048, 26, 0, 1)
 //   TRACKER    1: the velocity from prenc_tracker instead (a tracking filter with a gain
 //              table: GAIN_FILE, from `python -m prenc gains`; TIMER_BITS is its too,
-//              WINDOW, QUARTER_WINDOWS, ACCEL_FIT unused; with CAL = 1 the table's
-//              corrections go to the fine position only); 0: prenc_velocity (default)
+//              WINDOW, QUARTER_WINDOWS, ACCEL_FIT unused; with CAL = 1 it takes the
+//              table's corrections as prenc_velocity does); 0: prenc_velocity (default)
 //   GAIN_FILE  with TRACKER = 1: the gain table ($readmemh)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
@@ -227,18 +228,20 @@ module prenc_fine #(
       if (TRACKER == 1) begin : g_tracker
         prenc_tracker #(
           .TIMER_BITS (TIMER_BITS),
-          .GAIN_FILE  (GAIN_FILE)
+          .GAIN_FILE  (GAIN_FILE),
+          .CAL        (CAL)
         ) u_tracker (
           .clk      (clk),
           .rst      (rst),
           .step     (v_step),
           .step_cw  (v_step_cw),
           .illegal  (v_illegal),
+          .c_lo     (v_c_lo),
+          .c_hi     (v_c_hi),
           .velocity (velocity),
           .accel    (accel),
           .valid    (velocity_valid)
         );
-        wire unused_tracker = &{1'b0, v_c_lo, v_c_hi};
       end else begin : g_velocity
         prenc_velocity #(
           .WINDOW     (WINDOW),

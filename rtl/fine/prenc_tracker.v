@@ -8,7 +8,8 @@
 //   vel   quarters per clock, 2^-40 (+-2)
 //   acc   quarters per clock^2, 2^-60
 // Every clock pos += vel, vel += acc >>> 20. On a step of the decoder (d: +1 or -1 for
-// the next edge the same way, 0 for the same edge back after a reversal):
+// the next edge the same way, 0 for the same edge back after a reversal; with CAL = 1
+// plus the edge's correction less the last edge's, c_lo or c_hi in 2^-12 quarter):
 // - the innovation e = d - (pos + vel), 2^-20 quarter (saturated), and pos is
 //   referred to the new edge (pos + vel - d);
 // - the gains: the table's word (read, then registered once more) at the column of
@@ -43,9 +44,14 @@
 //   GAIN_FILE    the gain table ($readmemh, 1,280 words of 72 bits: prenc.fine.
 //                tracker_gains's format, `prenc gains`, for the disc's N and edge
 //                error and this clock); a missing or short file stops a simulation
+//   CAL          1: the edges at their true places, by the calibration table's
+//                corrections c_lo, c_hi (the first velocity is one nominal quarter
+//                over the clocks; the filter corrects it); 0: c_lo, c_hi unused
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs
+//   c_lo, c_hi   with CAL = 1, the corrections of the decoder's quarter's lower and
+//                upper edges (after this cycle's step), signed, 2^-12 quarter
 //   velocity     quarters per clock, signed, 48 fractional bits (prenc_velocity's unit)
 //   accel        quarters per clock per clock, signed, 48 fractional bits
 //   valid        the velocity is an estimate (0 after reset and an illegal transition)
@@ -55,13 +61,16 @@
 
 module prenc_tracker #(
   parameter integer TIMER_BITS = 26,
-  parameter         GAIN_FILE  = "prenc_gains_n10_30mhz.hex"
+  parameter         GAIN_FILE  = "prenc_gains_n10_30mhz.hex",
+  parameter integer CAL        = 0
 ) (
   input  wire        clk,
   input  wire        rst,
   input  wire        step,
   input  wire        step_cw,
   input  wire        illegal,
+  input  wire [15:0] c_lo,
+  input  wire [15:0] c_hi,
   output wire [50:0] velocity,
   output wire [49:0] accel,
   output wire        valid
@@ -75,6 +84,10 @@ module prenc_tracker #(
     if (GAIN_FILE == "") begin : g_no_gain_file
       initial $display("ERROR: %m: parameter GAIN_FILE is empty: the tracker needs its gain table");
       prenc_tracker_parameter_GAIN_FILE_is_required u_stop ();
+    end
+    if (CAL != 0 && CAL != 1) begin : g_bad_cal
+      initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
+      prenc_tracker_parameter_CAL_must_be_0_or_1 u_stop ();
     end
   endgenerate
 
@@ -207,7 +220,8 @@ module prenc_tracker #(
   wire          maneuver = bias_abs > 16'd256;
   wire          chase    = jump_reg || (chase_reg && bias_abs > 16'd128);
   wire [9:0]    age_half = {1'b0, age_reg[9:1]};
-  wire [9:0]    age_used = jump_reg ? 10'd4 : !maneuver ? age_reg : (age_half < 10'd4) ? 10'd4 : age_half;
+  wire [9:0]    age_used = jump_reg ? 10'd4 : !maneuver ? age_reg
+                         : (age_half < 10'd4) ? 10'd4 : age_half;
   reg  [5:0]    age_bin;
   always @(*) begin
     if (age_used[9])      age_bin = 6'd36 + {4'd0, age_used[8:7]};
@@ -313,7 +327,24 @@ module prenc_tracker #(
   // A step's edge less the last one (+-1 quarter, or 0 after a reversal); the innovation,
   // and the normalized innovation, saturated likewise.
   wire                 reversal   = (step_cw != cw_reg);
-  wire signed [SB-1:0] d_wide     = reversal ? {SB{1'b0}} : step_cw ? ONE : -ONE;
+  wire signed [SB-1:0] d_nominal  = reversal ? {SB{1'b0}} : step_cw ? ONE : -ONE;
+  wire signed [SB-1:0] d_wide;
+  generate
+    if (CAL == 1) begin : g_cal
+      // The edge crossed and the last one at their true places.
+      reg  signed [15:0] c_last_reg;   // the correction of the last edge crossed
+      wire signed [15:0] step_c = step_cw ? c_lo : c_hi;
+      wire signed [16:0] moved  = {step_c[15], step_c} - {c_last_reg[15], c_last_reg};
+      assign d_wide = d_nominal + {{(SB - 45){moved[16]}}, moved, 28'd0};
+      always @(posedge clk) begin
+        if (rst) c_last_reg <= 16'd0;
+        else if (step) c_last_reg <= step_c;
+      end
+    end else begin : g_nominal
+      assign d_wide = d_nominal;
+      wire unused_cal = &{1'b0, c_lo, c_hi};
+    end
+  endgenerate
   wire signed [SB-1:0] e_sum      = d_wide - predicted;
   wire                 e_fits     = (e_sum[SB-1:EB+19] == {(SB - EB - 19){1'b0}}) ||
                                     (e_sum[SB-1:EB+19] == {(SB - EB - 19){1'b1}});

@@ -40,7 +40,7 @@ class Fine:
             raise ValueError(f"cal = {cal} must be 0 or 1")
         self.cal = cal
         if gains is not None:   # TRACKER = 1: prenc_tracker with this gain table
-            self.velocity = Tracker(gains, timer_bits=timer_bits)
+            self.velocity = Tracker(gains, timer_bits=timer_bits, cal_bits=CAL_BITS if cal else 0)
         else:
             self.velocity = Velocity(window=window, timer_bits=timer_bits,
                                      cal_bits=CAL_BITS if cal else 0, quarter_windows=quarter_windows,

@@ -10,7 +10,9 @@ Units: quarters and clocks. The state is integer fixed point:
 
 Every clock the state moves: pos += vel, vel += acc >> 20. On a step of the decoder
 (edge x crossed; the last edge crossed was x - 1, x + 1 or, after a reversal, x
-itself: d = x - x_last is +1, -1 or 0):
+itself: d = x - x_last is +1, -1 or 0; with a calibration table, cal_bits = 12, the
+edges are at their true places: d = x + c(x) - x_last - c(x_last), the corrections in
+2^-12 quarter from the table, as prenc_velocity takes them):
 
 - the innovation e = d - (pos + vel), the measured edge less the predicted position,
   in 2^-20 quarter (saturated to +-4 quarters); pos is referred to the new edge
@@ -46,11 +48,14 @@ about v^2 a clock (a power of two from the leading one p of |vel| of the clock b
 2^(2p - 38) in 2^-40: v^2 to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter
 periods after the edge; there, or after no step for 2^TIMER_BITS - 1 clocks, the disc
 has stopped: the velocity reads 0 (valid) and the next step is an anchor. An illegal
-transition drops the velocity (`valid` 0) until the next estimate.
+transition drops the velocity (`valid` 0) until the next estimate. The first velocity
+is one nominal quarter over the clocks, with a calibration table too (the filter
+corrects it).
 """
 
 from __future__ import annotations
 
+from ..cal.table import FRAC as CAL_BITS   # the calibration's corrections: 2^-12 quarter
 from . import tracker_gains as tg
 from .velocity import DIV_CLOCKS, FRAC, Divider, saturate
 
@@ -103,12 +108,15 @@ class Tracker:
 
     NONE, ANCHOR, DIVIDE, TRACK = range(4)
 
-    def __init__(self, words: list[int], timer_bits: int = 26):
+    def __init__(self, words: list[int], timer_bits: int = 26, cal_bits: int = 0):
         if len(words) != tg.COLUMNS * tg.BINS:
             raise ValueError(f"the gain table has {len(words)} words, not {tg.COLUMNS * tg.BINS}")
         if not 12 <= timer_bits <= 32:
             raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
+        if cal_bits not in (0, CAL_BITS):
+            raise ValueError(f"cal_bits = {cal_bits} must be 0 or {CAL_BITS}")
         self.words = words
+        self.cal_bits = cal_bits
         self.timer_bits = timer_bits
         self.timer_max = (1 << timer_bits) - 1
         self.reset()
@@ -118,6 +126,7 @@ class Tracker:
         self.valid = 0
         self.velocity = 0       # the output: quarters per clock, FRAC (48) fractional bits
         self.cw = 1             # the last step's direction
+        self.c_last = 0         # the correction of the last edge crossed (CAL = 1)
         self.since = 0          # clocks since the last step (saturating)
         self.pos = 0
         self.vel = 0
@@ -167,8 +176,13 @@ class Tracker:
 
     def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0,
               c_lo: int = 0, c_hi: int = 0) -> None:
-        """c_lo, c_hi: a calibration table's corrections, which the tracker does not use
-        (its gain table's sigma covers the disc's edge errors)."""
+        """c_lo, c_hi: with a calibration table (cal_bits = 12), the corrections of the
+        edges of the quarter the decoder is in (after this cycle's step), in 2^-12
+        quarter: a clockwise step crossed its lower edge (c_lo), a counter-clockwise one
+        its upper edge (c_hi)."""
+        if not self.cal_bits:
+            c_lo = c_hi = 0
+        step_c = c_lo if step_cw else c_hi
         if rst:
             self.reset()
             return
@@ -250,13 +264,14 @@ class Tracker:
         elif step:
             reversal = step_cw != self.cw
             d = 0 if reversal else (1 if step_cw else -1)
-            self.cw, since_n = step_cw, 1
+            moved = (d << STATE_FRAC) + ((step_c - self.c_last) << (STATE_FRAC - CAL_BITS))
+            self.cw, since_n, self.c_last = step_cw, 1, step_c
             self.decaying, self.level = 0, 0
             if phase == self.TRACK and not stop:
                 predicted = self.pos + self.vel
-                pos_n = pos_n - (d << STATE_FRAC)
+                pos_n = pos_n - moved
                 if seq == 0:
-                    e = ((d << STATE_FRAC) - predicted) >> (STATE_FRAC - tg.INNOVATION_FRAC)
+                    e = (moved - predicted) >> (STATE_FRAC - tg.INNOVATION_FRAC)
                     self.e = clamp(e, E_BITS)
                     age = self.age
                     if self.jump:
@@ -273,7 +288,7 @@ class Tracker:
                 self.phase = self.DIVIDE
                 pos_n = vel_n = acc_n = 0
             elif phase == self.DIVIDE and not reversal and not stop:
-                pos_n = pos_n - (d << STATE_FRAC)   # referred, as the velocity is not known yet
+                pos_n = pos_n - moved   # referred, as the velocity is not known yet
             else:   # an anchor: the first step, a reversal, a stop
                 self.phase = self.ANCHOR
                 pos_n = vel_n = acc_n = 0

@@ -20,7 +20,8 @@ ACCEL_FIT = 0 (no fit, the small FPGA's velocity) every close loads the mean ove
 windows: the sequencer's states without the multiplier run, and nothing is held. With
 TRACKER = 1 the velocity is prenc_tracker's (prenc.fine.tracker.Tracker, its gain table
 for N = 6 at 100 kHz, as in tb/fine/prenc_tracker), and the test counts its updates and
-stops instead.
+stops instead; with CAL = 1 as well, the steps whose edge the table moves by another
+correction than the last edge's (the tracker's measured distance is not a whole quarter).
 """
 
 from __future__ import annotations
@@ -171,25 +172,27 @@ async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: 
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     vel = model.velocity
-    updates = stops = interpolated = 0
+    updates = stops = interpolated = corrected = 0
     columns = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in columns)))
-        seq, phase = vel.seq, vel.phase
+        seq, phase, c_last = vel.seq, vel.phase, vel.c_last
         model.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], now["illegal"],
                     write=now["cal_write"], address=now["cal_address"],
                     data=now["cal_data"] - ((now["cal_data"] & 0x8000) << 1))
         updates += int(seq == 0 and vel.seq == 1)
         stops += int(phase == vel.TRACK and vel.phase == vel.NONE)
+        corrected += int(vel.c_last != c_last)
         interpolated += model.interpolated
         expected = {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
                     "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
                     "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
                     "fine_valid": model.fine_valid, "interpolated": model.interpolated}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
-    dut._log.info("seed %d, CAL %d, TRACKER 1: %d clocks, %d updates, %d stops, %d interpolated",
-                  seed, cal, total, updates, stops, interpolated)
+    dut._log.info("seed %d, CAL %d, TRACKER 1: %d clocks, %d updates, %d stops, %d interpolated, "
+                  "%d steps corrected", seed, cal, total, updates, stops, interpolated, corrected)
     assert updates > 200 and stops >= 2 and interpolated > total // 2
+    assert (corrected > updates // 2) if cal else corrected == 0
 
 
 @pytest.mark.parametrize("cal, quarter, fit, tracker", [(0, 0, 1, 0), (1, 0, 1, 0), (0, 1, 1, 0), (1, 1, 1, 0),
