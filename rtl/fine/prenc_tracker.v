@@ -45,8 +45,8 @@
 //                tracker_gains's format, `prenc gains`, for the disc's N and edge
 //                error and this clock); a missing or short file stops a simulation
 //   CAL          1: the edges at their true places, by the calibration table's
-//                corrections c_lo, c_hi (the first velocity is one nominal quarter
-//                over the clocks; the filter corrects it); 0: c_lo, c_hi unused
+//                corrections c_lo, c_hi (the first velocity: the quarter's true width,
+//                its correction clamped to +-1/2, over the clocks); 0: unused
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs
@@ -177,6 +177,7 @@ module prenc_tracker #(
   reg           div_start;
   reg           div_cancel;
 
+  wire [QB:0] div_num;   // the first velocity's quarter, 2^-48 (below, by CAL)
   prenc_divider #(
     .NUM_BITS      (QB + 1),
     .DEN_BITS      (TB),
@@ -186,7 +187,7 @@ module prenc_tracker #(
     .rst      (rst),
     .start    (div_start),
     .cancel   (div_cancel),
-    .num      ({2'b01, {(QB - 1){1'b0}}}),
+    .num      (div_num),
     .den      (since_reg),
     .done     (div_done),
     .quotient (quotient)
@@ -336,12 +337,18 @@ module prenc_tracker #(
       wire signed [15:0] step_c = step_cw ? c_lo : c_hi;
       wire signed [16:0] moved  = {step_c[15], step_c} - {c_last_reg[15], c_last_reg};
       assign d_wide = d_nominal + {{(SB - 45){moved[16]}}, moved, 28'd0};
+      // The first velocity: the quarter's true width (its correction within +-1/2).
+      wire               high   = (moved > $signed(17'sd2047));
+      wire               low    = (moved < -$signed(17'sd2048));
+      wire signed [11:0] width  = high ? 12'sd2047 : low ? -12'sd2048 : moved[11:0];
+      assign div_num = {2'b01, 48'd0} + {{2{width[11]}}, width, 36'd0};
       always @(posedge clk) begin
         if (rst) c_last_reg <= 16'd0;
         else if (step) c_last_reg <= step_c;
       end
     end else begin : g_nominal
       assign d_wide = d_nominal;
+      assign div_num = {2'b01, 48'd0};
       wire unused_cal = &{1'b0, c_lo, c_hi};
     end
   endgenerate

@@ -48,9 +48,9 @@ about v^2 a clock (a power of two from the leading one p of |vel| of the clock b
 2^(2p - 38) in 2^-40: v^2 to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter
 periods after the edge; there, or after no step for 2^TIMER_BITS - 1 clocks, the disc
 has stopped: the velocity reads 0 (valid) and the next step is an anchor. An illegal
-transition drops the velocity (`valid` 0) until the next estimate. The first velocity
-is one nominal quarter over the clocks, with a calibration table too (the filter
-corrects it).
+transition drops the velocity (`valid` 0) until the next estimate. With a calibration
+table the first velocity is the quarter's true width over the clocks (its correction
+clamped to +-1/2 quarter).
 """
 
 from __future__ import annotations
@@ -69,6 +69,7 @@ E_BITS = 23                # the innovation: signed, 2^-20 quarter
 RESULT_BITS = 52           # a correction from the shifter
 BIAS_BITS = 16             # the innovations' running mean: signed, 2^-8 sigma
 AGE_FLOOR = 4
+FIRST_DC = 1 << (CAL_BITS - 1)   # the first velocity's correction: +-1/2 quarter at most
 APPLY = 32                 # clocks from the step to the corrections
 LOAD = 64                  # clocks from the second step to the first velocity
 assert DIV_CLOCKS < LOAD   # the division is done by then
@@ -189,6 +190,7 @@ class Tracker:
         quotient = self.div.quotient
         vel = self.vel
         start = cancel = 0
+        num = 1 << FRAC         # the first velocity: a quarter over the clocks
         shown = self.shown()
         seq, phase = self.seq, self.phase
 
@@ -264,7 +266,8 @@ class Tracker:
         elif step:
             reversal = step_cw != self.cw
             d = 0 if reversal else (1 if step_cw else -1)
-            moved = (d << STATE_FRAC) + ((step_c - self.c_last) << (STATE_FRAC - CAL_BITS))
+            dc = step_c - self.c_last
+            moved = (d << STATE_FRAC) + (dc << (STATE_FRAC - CAL_BITS))
             self.cw, since_n, self.c_last = step_cw, 1, step_c
             self.decaying, self.level = 0, 0
             if phase == self.TRACK and not stop:
@@ -285,6 +288,8 @@ class Tracker:
                     seq_n = S_READ
             elif phase == self.ANCHOR and not reversal and not stop:
                 start, self.negative, dividing_n = 1, int(not step_cw), 1
+                # ... the quarter's true width with a table (its correction within +-1/2)
+                num += max(-FIRST_DC, min(FIRST_DC - 1, dc)) << (FRAC - CAL_BITS)
                 self.phase = self.DIVIDE
                 pos_n = vel_n = acc_n = 0
             elif phase == self.DIVIDE and not reversal and not stop:
@@ -294,7 +299,7 @@ class Tracker:
                 pos_n = vel_n = acc_n = 0
                 seq_n, cancel = 0, 1
 
-        self.div.clock(start, 1 << FRAC, self.since, cancel)
+        self.div.clock(start, num, self.since, cancel)
         self.velocity = shown << (FRAC - STATE_FRAC)
         self.pos = clamp(pos_n, POS_BITS)
         self.vel = saturate(vel_n, VEL_BITS)
