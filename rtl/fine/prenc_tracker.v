@@ -344,7 +344,7 @@ module prenc_tracker #(
       assign div_num = {2'b01, 48'd0} + {{2{width[11]}}, width, 36'd0};
       always @(posedge clk) begin
         if (rst) c_last_reg <= 16'd0;
-        else if (step) c_last_reg <= step_c;
+        else if (step && !illegal) c_last_reg <= step_c;   // as the step logic below
       end
     end else begin : g_nominal
       assign d_wide = d_nominal;

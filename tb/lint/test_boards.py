@@ -46,6 +46,15 @@ def test_board_builds_and_meets_timing(board):
     assert "Fmax" in (out / "report.md").read_text()
 
 
+def test_the_ulx3s_with_the_tracker_meets_its_clock():
+    """`make synth BOARD=ulx3s TRACKER=printed`: the velocity from prenc_tracker, its gain
+    table (written for the board's 50 MHz) in block RAM beside the ROM."""
+    out = SIM_BUILD / "boards" / "ulx3s-tracker"
+    result = synth.board_build(synth.BOARDS["ulx3s"], 10, out, tracker="printed")
+    assert result.timing_met
+    assert result.used(synth.TARGETS[result.target].brams)[0] >= 8, "the ROM and the gain table"
+
+
 @pytest.mark.parametrize("target,top,board", [("ice40-up5k", "prenc_wb_harness", "icebreaker"),
                                               ("ecp5-25k", "prenc_wb", "ulx3s")])
 def test_the_wishbone_core_meets_the_boards_clocks(target, top, board):

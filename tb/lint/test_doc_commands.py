@@ -30,6 +30,8 @@ COVERED = [
     (r"make test", ".ci/run", ["make test"]),
     (r"make synth BOARD=(icebreaker|icestick|ulx3s)", "tb/lint/test_boards.py",
      ["def test_board_builds_and_meets_timing", "synth.BOARDS", "board_build"]),
+    (r"make synth BOARD=ulx3s TRACKER=printed", "tb/lint/test_boards.py",
+     ["def test_the_ulx3s_with_the_tracker_meets_its_clock", 'tracker="printed"']),
     (r"\.venv/bin/python scripts/synth\.py --core ice40-hx8k", "tb/lint/test_boards.py", ['"--core"', "ice40-hx8k"]),
     (r"\.venv/bin/python scripts/synth\.py --core ice40-up5k --top prenc_core_harness", "tb/lint/test_boards.py",
      ["ice40-up5k", "prenc_core_harness"]),

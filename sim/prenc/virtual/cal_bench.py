@@ -10,9 +10,9 @@ position and the velocity, and how many turns it needs.
 2. Applied: the scenarios of section 9 on the printed disc, through the models of
    rtl/fine/ without and with the table (prenc.fine.fine.Fine with CAL = 1: the table
    block prenc.cal.lookup gives prenc_velocity, or prenc_tracker, and
-   prenc_fine_position the corrections of their quarters' edges). The table is the one a 10-turn run at
-   70 rpm with a +-2 % ripple at 100 Hz gives. The position error is against the true
-   angle less the calibration's zero (the mean of the disc's edge errors, which no
+   prenc_fine_position the corrections of their quarters' edges). The table is the one
+   a 10-turn run at 70 rpm with a +-2 % ripple at 100 Hz gives. The position error is
+   against the true angle less the calibration's zero (the mean of the disc's edge errors, which no
    calibration of one disc can see; a user sets the zero at mounting); the zero is
    printed.
 """
