@@ -204,11 +204,13 @@ module DP16KD (
   localparam WIDE = (DATA_WIDTH_A == 36) && (DATA_WIDTH_B == 36);
   initial begin
     if (DATA_WIDTH_A != 18 && DATA_WIDTH_A != 9 && !WIDE) begin
-      $display("ERROR: %m: DP16KD model: DATA_WIDTH_A = %0d is not modelled (18, 9; 36 with B)", DATA_WIDTH_A);
+      $display("ERROR: %m: DP16KD model: DATA_WIDTH_A = %0d is not modelled (18, 9; 36 with B)",
+               DATA_WIDTH_A);
       $finish(1);
     end
     if (DATA_WIDTH_B != 18 && DATA_WIDTH_B != 9 && !WIDE) begin
-      $display("ERROR: %m: DP16KD model: DATA_WIDTH_B = %0d is not modelled (18, 9; 36 with A)", DATA_WIDTH_B);
+      $display("ERROR: %m: DP16KD model: DATA_WIDTH_B = %0d is not modelled (18, 9; 36 with A)",
+               DATA_WIDTH_B);
       $finish(1);
     end
     if (CLKAMUX != "CLKA" || CLKBMUX != "CLKB") begin
