@@ -105,6 +105,15 @@ def stimulus(seed: int, cal: int) -> tuple[dict[str, np.ndarray], int]:
             "illegal": illegal, "cal_write": write, "cal_address": address, "cal_data": data}, total
 
 
+def expected(model: Fine) -> dict[str, int]:
+    """The block's outputs after this clock, from the model (as the port widths hold them)."""
+    vel = model.velocity
+    return {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
+            "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
+            "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
+            "fine_valid": model.fine_valid, "interpolated": model.interpolated}
+
+
 @cocotb.test()
 async def matches_the_models_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_FINE_SEED", rng().randrange(1 << 30)))  # replay a draw
@@ -147,11 +156,7 @@ async def matches_the_models_clock_by_clock(dut):
         stops += int(before != 0 and vel.velocity == 0)
         holds += vel.held
         looked_up += int(cal and model.lookup.ok)
-        expected = {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
-                    "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
-                    "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
-                    "fine_valid": model.fine_valid, "interpolated": model.interpolated}
-        await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
+        await clock_and_check(dut, now, expected(model), lambda: f"seed {seed}, clock {c}")
     dut._log.info("seed %d, CAL %d, QUARTER_WINDOWS %d, ACCEL_FIT %d: %d clocks, cycles per "
                   "sequencer state %s, %d stops, %d clocks held, %d with both words of the table, "
                   "decisions %s", seed, cal, quarter, fit, total, seen, stops, holds, looked_up, decisions)
@@ -184,11 +189,7 @@ async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: 
         stops += int(phase == vel.TRACK and vel.phase == vel.NONE)
         corrected += int(vel.c_last != c_last)
         interpolated += model.interpolated
-        expected = {"velocity": vel.velocity & ((1 << VELOCITY_BITS) - 1),
-                    "accel": vel.accel & ((1 << ACCEL_BITS) - 1),
-                    "velocity_valid": vel.valid, "fine_pos": model.fine_pos,
-                    "fine_valid": model.fine_valid, "interpolated": model.interpolated}
-        await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
+        await clock_and_check(dut, now, expected(model), lambda: f"seed {seed}, clock {c}")
     dut._log.info("seed %d, CAL %d, TRACKER 1: %d clocks, %d updates, %d stops, %d interpolated, "
                   "%d steps corrected", seed, cal, total, updates, stops, interpolated, corrected)
     assert updates > 200 and stops >= 2 and interpolated > total // 2
