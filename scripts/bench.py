@@ -243,13 +243,13 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 rows.append((f"{name} board top", n, _synth_line(synth, r)))
             except synth.FlowError as err:
                 rows.append((f"{name} board top", n, f"FAILED: {err}"))
-    # The ULX3S with the velocity from prenc_tracker (TRACKER = 1, the printed disc's table).
+    # The ULX3S with prenc_tracker (TRACKER = 2, the printed disc's table).
     board = synth.BOARDS["ulx3s"]
     try:
         r = synth.board_build(board, 10, SIM_BUILD / "bench" / "synth" / "ulx3s-n10-tracker", tracker="printed")
-        rows.append(("ulx3s board top, TRACKER = 1", 10, _synth_line(synth, r)))
+        rows.append(("ulx3s board top, TRACKER = 2", 10, _synth_line(synth, r)))
     except synth.FlowError as err:
-        rows.append(("ulx3s board top, TRACKER = 1", 10, f"FAILED: {err}"))
+        rows.append(("ulx3s board top, TRACKER = 2", 10, f"FAILED: {err}"))
     # The LiteX example: VexRiscv, prenc_wb and the firmware of sw/litex/ (scripts/litex_soc.py).
     for board in ("ulx3s", "icebreaker"):
         what = f"LiteX example SoC (VexRiscv minimal + prenc_wb), {board}"
@@ -413,9 +413,10 @@ def fine_section() -> bool:
     print(f"   ours: the default, full-cycle windows of at least WINDOW = {fb.WINDOW} clocks (any disc);")
     print(f"   quarter: QUARTER_WINDOWS = 1, windows between any edges of at least {fb.QUARTER_WINDOW} clocks")
     print("   (for a disc whose edges are accurate, or calibrated: section 10); mean: ACCEL_FIT = 0, the")
-    print("   default's windows without the fit, the mean of the last two (for a small FPGA); tracker: TRACKER = 1,")
-    print("   a tracking filter whose gains come from a table (`prenc gains`, the disc's: sigma 0.01 quarter ideal,")
-    print("   0.15 printed).")
+    print("   default's windows without the fit, the mean of the last two (for a small FPGA); tracker: a tracking")
+    print("   filter whose gains come from a table (`prenc gains`, the disc's: sigma 0.01 quarter ideal, 0.15")
+    print("   printed); TRACKER = 1 on the ideal disc, TRACKER = 2 on the printed one (between edges the fine")
+    print("   position is the filter's).")
     print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
     print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
     print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")
@@ -464,7 +465,7 @@ def fine_section() -> bool:
     ideal = results["ideal disc"]
     steady = [f"{r} rpm" for r in fb.STEADY_RPM if r >= 10]
     for mine, title in (("quarter", "quarter windows (an accurate disc's configuration)"),
-                        ("tracker", "TRACKER = 1, the tracking filter"),
+                        ("tracker", "TRACKER = 1, the tracking filter (the ideal disc's)"),
                         ("ours", "the default, full-cycle windows"),
                         ("mean", "ACCEL_FIT = 0, the mean of two windows (a small FPGA's)")):
         # The goals count for the configuration meant for an ideal disc; the default's
@@ -505,7 +506,7 @@ def cell_counts(result, family: str) -> str:
 
 def fine_logic_rows() -> list[str]:
     """What the configurations cost: prenc_fine with QUARTER_WINDOWS 0 and 1, with
-    ACCEL_FIT 0 and with TRACKER 1 (Yosys, iCE40 and ECP5 cells)."""
+    ACCEL_FIT 0 and with TRACKER 1 and 2 (Yosys, iCE40 and ECP5 cells)."""
     sys.path.insert(0, str(REPO / "tb"))
     from yosys import synthesize
 
@@ -517,7 +518,8 @@ def fine_logic_rows() -> list[str]:
         cells = []
         for label, extra in (("QUARTER_WINDOWS = 0", {"QUARTER_WINDOWS": 0}),
                              ("QUARTER_WINDOWS = 1", {"QUARTER_WINDOWS": 1}), ("ACCEL_FIT = 0", {"ACCEL_FIT": 0}),
-                             ("TRACKER = 1", {"TRACKER": 1, "GAIN_FILE": str(gains)})):
+                             ("TRACKER = 1", {"TRACKER": 1, "GAIN_FILE": str(gains)}),
+                             ("TRACKER = 2", {"TRACKER": 2, "GAIN_FILE": str(gains)})):
             try:
                 result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, **extra})
                 cells.append(f"{label}: {cell_counts(result, family)}")

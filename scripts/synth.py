@@ -310,15 +310,17 @@ def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
 
 
 def tracker_for(disc: str, bits: int, board: Board, out: Path) -> dict[str, object]:
-    """The parameters of a build whose velocity is prenc_tracker's: TRACKER = 1 and its
-    gain table for the disc (ideal or printed), N and the board's clock, written into `out`."""
+    """The parameters of a build whose velocity is prenc_tracker's and its gain table for
+    the disc, N and the board's clock, written into `out`: TRACKER = 1 for an ideal disc
+    (or a calibrated one); TRACKER = 2 for a printed one, whose fine position between
+    edges is the filter's (it averages the edges' errors)."""
     from prenc.fine import tracker_gains
 
     if not board.cal:
         raise FlowError(f"the {board.name} board builds no velocity (FINE = 0): --tracker needs the fine blocks")
     path = out / "gains.hex"
     tracker_gains.write(path, bits, board.clock_mhz * 1e6, tracker_gains.SIGMA[disc])
-    return {"TRACKER": 1, "GAIN_FILE": path}
+    return {"TRACKER": 2 if disc == "printed" else 1, "GAIN_FILE": path}
 
 
 def board_parameters(board: Board, bits: int, out: Path, baud: int | None = None,
@@ -421,8 +423,9 @@ def main(argv: list[str] | None = None) -> int:
                         help="with --board: build the calibration table in (CAL = 1): a table file from "
                              "`prenc calibrate` (checked), or 1 for an empty one, written at run time")
     parser.add_argument("--tracker", choices=("ideal", "printed"),
-                        help="with --board: the velocity from prenc_tracker (TRACKER = 1), its gain table for "
-                             "an ideal or a printed disc at the board's clock")
+                        help="with --board: the velocity from prenc_tracker, its gain table for an ideal "
+                             "(TRACKER = 1) or a printed disc (TRACKER = 2: the fine position the filter's too) "
+                             "at the board's clock")
     parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
     parser.add_argument("--top", choices=("prenc_core", "prenc_core_harness", "prenc_wb", "prenc_wb_harness"),
                         default="prenc_core",

@@ -53,8 +53,10 @@
 //                 half its logic, for a small FPGA; needs QUARTER_WINDOWS = 0)
 //   TRACKER       prenc_fine's: 1, the velocity from prenc_tracker, a tracking filter
 //                 whose gains come from GAIN_FILE (`prenc gains` for N, the disc's edge
-//                 error and CLK_HZ); 0: prenc_velocity (default)
-//   GAIN_FILE     with TRACKER = 1: the gain table ($readmemh)
+//                 error and CLK_HZ); 2: the same, and the fine position between edges
+//                 is the filter's (a printed disc without a table); 0: prenc_velocity
+//                 (default)
+//   GAIN_FILE     with TRACKER = 1 or 2: the gain table ($readmemh)
 //   CAL           1: the fine position and the velocity use the sync track's calibration
 //                 table (docs/calibration.md; needs FINE = 1), written over the host
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)

@@ -135,7 +135,7 @@ module prenc_wb #(
   localparam [4:0] A_CAL_DATA         = 5'h19;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_0900;  // 0.9.0, the project's VERSION
+  localparam [31:0] VERSION = 32'h0000_0A00;  // 0.10.0, the project's VERSION
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n
@@ -375,7 +375,8 @@ module prenc_wb #(
       case (wb_adr_i)
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
-        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 2'd0, TRACKER[0], ~ACCEL_FIT[0],
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 1'b0, (TRACKER == 2), (TRACKER != 0),
+                                         ~ACCEL_FIT[0],
                                          QUARTER_WINDOWS[0], CAL[0], FINE[0], FINE_BITS[3:0],
                                          N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};

@@ -2,7 +2,7 @@
 // prenc_fine: fine position and velocity beside the core (docs/fine.md).
 //
 //   prenc_core: sync_step, direction, sync_illegal -> prenc_velocity -> velocity, accel
-//                                  (TRACKER = 1: prenc_tracker)
+//                                  (TRACKER = 1, 2: prenc_tracker)
 //               pos_hyb, pos_valid ------------------> prenc_fine_position -> fine_pos
 //
 // The core stays the judge of the position: fine_pos's quarter is pos_hyb's while
@@ -26,7 +26,7 @@
 // Latency: fine_pos is OUTPUT_DELAY = 3 clocks after the core's pos_hyb (extrapolated
 // over the clocks from the pins by LOOKAHEAD_HALVES); the velocity updates FULL_CLOCKS
 // after a window closes and integrates its acceleration every clock in between
-// (prenc_velocity); with TRACKER = 1 an edge's update lands 32 clocks after it,
+// (prenc_velocity); with TRACKER = 1 or 2 an edge's update lands 32 clocks after it,
 // compensated to its instant, and the output is registered (prenc_tracker).
 //
 // Parameters
@@ -36,7 +36,11 @@
 //              table: GAIN_FILE, from `python -m prenc gains`; TIMER_BITS is its too,
 //              WINDOW, QUARTER_WINDOWS, ACCEL_FIT unused; with CAL = 1 it takes the
 //              table's corrections as prenc_velocity does); 0: prenc_velocity (default)
-//   GAIN_FILE  with TRACKER = 1: the gain table ($readmemh)
+//              2: prenc_tracker, and between edges the fine position is the tracker's
+//              filtered position (for a disc whose edges are off by more than a clock
+//              or two, printed and not calibrated: it averages the edges' errors;
+//              docs/fine.md); 1 and 0: the last edge and the velocity
+//   GAIN_FILE  with TRACKER = 1 or 2: the gain table ($readmemh)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
@@ -99,12 +103,12 @@ module prenc_fine #(
       initial $display("ERROR: %m: parameter FINE_BITS = %0d needs ENABLE = 1", FINE_BITS);
       prenc_fine_parameter_FINE_BITS_needs_ENABLE_1 u_stop ();
     end
-    if (TRACKER != 0 && TRACKER != 1) begin : g_bad_tracker
-      initial $display("ERROR: %m: parameter TRACKER = %0d must be 0 or 1", TRACKER);
+    if (TRACKER < 0 || TRACKER > 2) begin : g_bad_tracker
+      initial $display("ERROR: %m: parameter TRACKER = %0d is out of range 0..2", TRACKER);
       prenc_fine_parameter_TRACKER_must_be_0_or_1 u_stop ();
     end
-    if (TRACKER == 1 && ENABLE != 1) begin : g_bad_tracker_enable
-      initial $display("ERROR: %m: parameter TRACKER = 1 needs ENABLE = 1");
+    if (TRACKER != 0 && ENABLE != 1) begin : g_bad_tracker_enable
+      initial $display("ERROR: %m: parameter TRACKER = %0d needs ENABLE = 1", TRACKER);
       prenc_fine_parameter_TRACKER_needs_ENABLE_1 u_stop ();
     end
     if (CAL != 0 && CAL != 1) begin : g_bad_cal
@@ -225,7 +229,13 @@ module prenc_fine #(
         wire unused_cal = &{1'b0, cal_write, cal_address, cal_data};
       end
 
-      if (TRACKER == 1) begin : g_tracker
+      wire [27:0] offset;         // the tracker's filtered position (TRACKER = 2)
+      wire        offset_valid;
+
+      if (TRACKER != 0) begin : g_tracker
+        wire [27:0] t_offset;
+        wire        t_offset_valid;
+
         prenc_tracker #(
           .TIMER_BITS (TIMER_BITS),
           .GAIN_FILE  (GAIN_FILE),
@@ -240,8 +250,41 @@ module prenc_fine #(
           .c_hi     (v_c_hi),
           .velocity (velocity),
           .accel    (accel),
-          .valid    (velocity_valid)
+          .valid    (velocity_valid),
+          .offset       (t_offset),
+          .offset_valid (t_offset_valid)
         );
+
+        if (TRACKER == 2 && CAL == 0) begin : g_offset_delay
+          // To meet the step prenc_fine_position takes (3 clocks old; the tracker's
+          // registers hold it from 1 clock after): 2 registers. With CAL = 1 the
+          // tracker takes the step 2 clocks late already.
+          reg [27:0] offset_0_reg;
+          reg [27:0] offset_1_reg;
+          reg        offset_valid_0_reg;
+          reg        offset_valid_1_reg;
+          always @(posedge clk) begin
+            offset_0_reg       <= t_offset;
+            offset_1_reg       <= offset_0_reg;
+            offset_valid_0_reg <= t_offset_valid;
+            offset_valid_1_reg <= offset_valid_0_reg;
+            if (rst) begin
+              offset_0_reg       <= 28'd0;
+              offset_1_reg       <= 28'd0;
+              offset_valid_0_reg <= 1'b0;
+              offset_valid_1_reg <= 1'b0;
+            end
+          end
+          assign offset       = offset_1_reg;
+          assign offset_valid = offset_valid_1_reg;
+        end else if (TRACKER == 2) begin : g_offset
+          assign offset       = t_offset;
+          assign offset_valid = t_offset_valid;
+        end else begin : g_no_offset
+          assign offset       = 28'd0;
+          assign offset_valid = 1'b0;
+          wire unused_offset = &{1'b0, t_offset, t_offset_valid};
+        end
       end else begin : g_velocity
         prenc_velocity #(
           .WINDOW     (WINDOW),
@@ -261,6 +304,8 @@ module prenc_fine #(
           .accel    (accel),
           .valid    (velocity_valid)
         );
+        assign offset       = 28'd0;
+        assign offset_valid = 1'b0;
       end
 
       prenc_fine_position #(
@@ -279,6 +324,8 @@ module prenc_fine #(
         .velocity_valid (velocity_valid),
         .c_lo           (f_c_lo),
         .c_hi           (f_c_hi),
+        .offset         (offset),
+        .offset_valid   (offset_valid),
         .fine_pos       (fine_pos),
         .fine_valid     (fine_valid),
         .interpolated   (interpolated)

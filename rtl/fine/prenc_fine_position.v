@@ -5,6 +5,10 @@
 // - travel: the velocity integrated since pos_hyb's last step (FRAC = 48 fractional
 //   bits of a quarter, saturating at 2 quarters). The decoder's step is delayed
 //   STEP_DELAY = 3 cycles, so that travel restarts on the cycle pos_hyb shows the step.
+//   While offset_valid, travel is `offset` instead: a tracking filter's estimate of the
+//   position past the last edge crossed (prenc_tracker's, prenc_fine's TRACKER = 2),
+//   which averages many edges where one edge and the velocity carry that edge's own
+//   error; when it stops (an edge overdue, a stop), travel goes on from there.
 // - The fraction: the last step crossed the quarter's lower edge (CW) or its upper
 //   edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-48). While pos_valid the fine
 //   position's quarter is pos_hyb's: when the next edge is late, the fraction holds at
@@ -45,6 +49,9 @@
 //                        sync_step and direction)
 //   velocity, velocity_valid   prenc_velocity's
 //   c_lo, c_hi           with CAL = 1: the corrections of pos_hyb's quarter's edges
+//   offset, offset_valid the filter's position past the last edge crossed (signed,
+//                        2^-24 quarter), as of the step this block takes this cycle
+//                        (its step input 3 cycles before); offset_valid 0: unused
 //   fine_pos             N + 2 + F bits: quarters and their fraction
 //   fine_valid           pos_valid, aligned with fine_pos
 //   interpolated         fine_valid, with a valid velocity (else the fraction is fixed)
@@ -68,6 +75,8 @@ module prenc_fine_position #(
   input  wire                   velocity_valid,
   input  wire [15:0]            c_lo,
   input  wire [15:0]            c_hi,
+  input  wire [27:0]            offset,
+  input  wire                   offset_valid,
   output wire [N+FINE_BITS+1:0] fine_pos,
   output wire                   fine_valid,
   output wire                   interpolated
@@ -213,9 +222,11 @@ module prenc_fine_position #(
     tree2_1_reg <= tree1_2_reg + tree1_3_reg;
     tree3_reg   <= tree2_0_reg + tree2_1_reg;
     // The travel since pos_hyb's last step.
-    if (step_d_reg[STEP_DELAY-1]) begin
+    if (step_d_reg[STEP_DELAY-1]) cw_reg <= cw_d_reg[STEP_DELAY-1];
+    if (offset_valid) begin
+      travel_reg <= {offset, 24'd0};
+    end else if (step_d_reg[STEP_DELAY-1]) begin
       travel_reg <= {LB{1'b0}};
-      cw_reg     <= cw_d_reg[STEP_DELAY-1];
     end else if (travel_in) begin
       travel_reg <= travel_sum;
     end

@@ -55,6 +55,11 @@
 //   velocity     quarters per clock, signed, 48 fractional bits (prenc_velocity's unit)
 //   accel        quarters per clock per clock, signed, 48 fractional bits
 //   valid        the velocity is an estimate (0 after reset and an illegal transition)
+//   offset       the filtered position: the predicted position past the last edge
+//                crossed, signed, 2^-24 quarter (pos's top 28 bits; prenc_fine's
+//                TRACKER = 2 makes it the fine position between edges)
+//   offset_valid the filter tracks and moves the way the disc last stepped, no edge
+//                overdue (both from the registers: the state after the clock before)
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -73,7 +78,9 @@ module prenc_tracker #(
   input  wire [15:0] c_hi,
   output wire [50:0] velocity,
   output wire [49:0] accel,
-  output wire        valid
+  output wire        valid,
+  output wire [27:0] offset,
+  output wire        offset_valid
 );
 
   generate
@@ -600,6 +607,8 @@ module prenc_tracker #(
   assign velocity = {{1{velocity_reg[VB-1]}}, velocity_reg, 8'd0};
   assign accel    = {{10{acc_reg[AB-1]}}, acc_reg[AB-1:12]};
   assign valid    = valid_reg;
+  assign offset       = pos_reg[PB-1:PB-28];
+  assign offset_valid = (phase_reg == P_TRACK) && !decaying_reg && same;
 
   wire unused = &{1'b0, quotient[7:0], sh_wide[XB+23:RB], z_diff[1:0], shifted[RB-1:CB],
                   div_done, first_vel[SB-1:SB-6]};

@@ -84,7 +84,7 @@ BAD_PARAMETERS = [
     ("prenc_wb", "HYPOTHESES", 2), ("prenc_wb", "LOCK_BOTH", 0), ("prenc_board", "CONV_REG", 2),
     ("prenc_board", "DUAL_VOTES", 8),
     ("prenc_velocity", "ACCEL_FIT", 2), ("prenc_board", "ACCEL_FIT", 2),
-    ("prenc_tracker", "TIMER_BITS", 40), ("prenc_tracker", "CAL", 2), ("prenc_fine", "TRACKER", 2),
+    ("prenc_tracker", "TIMER_BITS", 40), ("prenc_tracker", "CAL", 2), ("prenc_fine", "TRACKER", 3),
 ]
 
 

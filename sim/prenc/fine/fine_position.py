@@ -8,7 +8,11 @@ step meets pos_hyb, which shows it 4 cycles after the decoder); the velocity and
 valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 
 - travel: the velocity integrated since pos_hyb's last step (FRAC bits, saturating
-  at 2 quarters).
+  at 2 quarters); or, while `offset_valid`, `offset`: a tracking filter's estimate of
+  the position past the last edge crossed (prenc_tracker's, TRACKER = 1), which
+  averages many edges where one edge and the velocity carry the edge's own error.
+  When the filter stops tracking (an edge overdue, a stop: its velocity 0), travel
+  goes on from there with the velocity.
 - The fraction of the quarter: the last step crossed the quarter's lower edge (CW) or
   its upper edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-48). So while
   pos_valid the fine position's quarter is pos_hyb's: when the next edge is late, the
@@ -43,6 +47,7 @@ from __future__ import annotations
 
 from .velocity import FRAC, LEAD_LIMIT
 
+OFFSET_FRAC = 24   # the offset input: 2^-24 quarter
 STEP_DELAY = 3     # decoder step -> the cycle before pos_hyb shows it (prenc_position: 4)
 OUTPUT_DELAY = 3   # pos_hyb -> fine_pos
 TREE_DELAY = 3     # velocity -> velocity x LOOKAHEAD_HALVES
@@ -74,10 +79,14 @@ class FinePosition:
         self.interpolated = 0
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
-              velocity_valid: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0) -> None:
+              velocity_valid: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0,
+              offset: int = 0, offset_valid: int = 0) -> None:
         """c_lo, c_hi: with a calibration table, the corrections of pos_hyb's quarter's
         lower and upper edge (FRAC bits): the quarter really spans
-        [pos_hyb + c_lo, pos_hyb + 1 + c_hi)."""
+        [pos_hyb + c_lo, pos_hyb + 1 + c_hi).
+        offset, offset_valid: a tracking filter's position past the last edge crossed
+        (2^-OFFSET_FRAC quarter), as of the step this block takes this cycle (its
+        step input STEP_DELAY cycles before): travel takes it while offset_valid."""
         if rst:
             self.reset()
             return
@@ -98,7 +107,11 @@ class FinePosition:
         self.a = (frac, pos_hyb, pos_valid, velocity_valid, (c_lo + top) >> 1)
         self.tree = [velocity * self.lookahead_halves] + self.tree[:-1]
         if self.step_d[-1]:
-            self.travel, self.cw = 0, self.cw_d[-1]
+            self.cw = self.cw_d[-1]
+        if offset_valid:
+            self.travel = offset << (FRAC - OFFSET_FRAC)
+        elif self.step_d[-1]:
+            self.travel = 0
         else:
             travel = self.travel + velocity
             if abs(travel) < LEAD_LIMIT:

@@ -60,6 +60,8 @@ from . import tracker_gains as tg
 from .velocity import DIV_CLOCKS, FRAC, Divider, saturate
 
 POS_BITS = 44              # pos: signed, 2^-40 quarter (+-8 quarters)
+OFFSET_FRAC = 24           # the offset output: pos's top bits, 2^-24 quarter
+OFFSET_BITS = POS_BITS - (40 - OFFSET_FRAC)
 CORR_BITS = 46             # the position's and the velocity's corrections, 2^-40
 VEL_BITS = 42              # vel: signed, 2^-40 quarter per clock
 ACC_BITS = 52              # acc: signed, 2^-60 quarter per clock^2
@@ -169,6 +171,19 @@ class Tracker:
         if self.decaying:
             magnitude = min(magnitude, self.level)
         return magnitude if self.cw else -magnitude
+
+    @property
+    def offset(self) -> int:
+        """The filtered position: the predicted position minus the last edge crossed, in
+        2^-OFFSET_FRAC quarter (pos's top OFFSET_BITS bits), for prenc_fine_position."""
+        return self.pos >> (STATE_FRAC - OFFSET_FRAC)
+
+    @property
+    def offset_valid(self) -> int:
+        """The filter tracks and moves the way the disc last stepped, no edge overdue:
+        `offset` is its estimate (from the registers, as `offset` is)."""
+        same = self.vel > 0 if self.cw else self.vel < 0
+        return int(self.phase == self.TRACK and not self.decaying and same)
 
     @property
     def accel(self) -> int:

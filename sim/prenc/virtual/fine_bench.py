@@ -16,7 +16,8 @@ prenc.fine.fine_position) clock by clock, in four configurations: the default
 (full-cycle windows, WINDOW = 2048, for any disc: "ours"), quarter windows
 (QUARTER_WINDOWS = 1, WINDOW = 640, for a disc whose edges are accurate or calibrated:
 "quarter"), the small FPGA's (ACCEL_FIT = 0, the default's windows without the fit:
-"mean") and the tracking filter (TRACKER = 1, its gain table for the disc: "tracker");
+"mean") and the tracking filter (its gain table for the disc: "tracker"; TRACKER = 1 on
+the ideal disc, TRACKER = 2 on the printed one, its fine position the filter's);
 and three velocity estimators that
 users pick instead, each with the same interpolation and extrapolation for its fine
 position:
@@ -42,9 +43,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..fine import tracker_gains
-from ..fine.fine_position import OUTPUT_DELAY, STEP_DELAY, FinePosition
-from ..fine.tracker import Tracker
-from ..fine.velocity import FRAC, Velocity
+from ..fine.fine import Fine
+from ..fine.fine_position import OUTPUT_DELAY, STEP_DELAY
+from ..fine.velocity import FRAC
 from .encoder import Disc
 from .printing import Printing
 from .trajectory import Trajectory
@@ -114,16 +115,15 @@ def default_window(quarter_windows: int) -> int:
 def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
              lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N,
              quarter_windows: int = 0, accel_fit: int = 1,
-             gains: list[int] | None = None) -> dict[str, np.ndarray]:
-    """The models of prenc_velocity and prenc_fine_position, clock by clock (window:
-    default_window(quarter_windows) unless given); with `gains` (a gain table's words),
-    prenc_tracker's model instead of prenc_velocity's (prenc_fine's TRACKER = 1)."""
-    if gains is not None:
-        vel = Tracker(gains)
-    else:
-        vel = Velocity(window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
-                       accel_fit=accel_fit)
-    fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
+             gains: list[int] | None = None, filtered: int = 0) -> dict[str, np.ndarray]:
+    """The model of prenc_fine (prenc_velocity and prenc_fine_position), clock by clock
+    (window: default_window(quarter_windows) unless given); with `gains` (a gain table's
+    words), prenc_tracker's model instead of prenc_velocity's (TRACKER = 1; with
+    `filtered`, TRACKER = 2: the fine position between edges is the tracker's)."""
+    fine = Fine(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves,
+                window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
+                accel_fit=accel_fit, gains=gains, filtered=filtered)
+    vel = fine.velocity
     total = len(sync.step)
     v_out = np.zeros(total)
     v_valid = np.zeros(total, dtype=np.int8)
@@ -132,12 +132,11 @@ def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
     step, cw, pos = sync.step.tolist(), sync.cw.tolist(), sync.pos_hyb.tolist()
     scale = 1.0 / (1 << FRAC)
     for c in range(total):
-        fine.clock(pos[c], 1, step[c], cw[c], vel.velocity, vel.valid)
-        vel.clock(step[c], cw[c])
+        fine.clock(pos[c], 1, step[c], cw[c], 0)
         v_out[c] = vel.velocity * scale
         v_valid[c] = vel.valid
         fine_pos[c] = fine.fine_pos
-        interpolated[c] = fine.interpolated
+        interpolated[c] = fine.fine.interpolated
     return {"velocity": v_out, "velocity_valid": v_valid, "fine": fine_pos, "interpolated": interpolated}
 
 
@@ -320,8 +319,11 @@ def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
     ours = run_fine(sync)
     quarter = run_fine(sync, quarter_windows=1)
     mean = run_fine(sync, accel_fit=0)
+    # the tracker as a user builds it for the disc: the ideal disc's gain table (TRACKER = 1),
+    # or the printed disc's and its filtered position (TRACKER = 2)
     tracker = run_fine(sync, gains=tracker_gains.table(N, CLK_HZ, tracker_gains.SIGMA["ideal" if printing is None
-                                                                                     else "printed"]))
+                                                                                     else "printed"]),
+                       filtered=int(printing is not None))
     scale = 1 << FINE_BITS
     rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "ours": score(case, sync, ours["fine"] / scale, ours["velocity"]),

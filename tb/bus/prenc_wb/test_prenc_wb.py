@@ -228,7 +228,8 @@ async def registers_after_reset_and_writes(dut):
     assert await regs.PARAMS.fine_bits.read() == int(dut.FINE_BITS.value)
     assert await regs.PARAMS.quarter_windows.read() == int(dut.QUARTER_WINDOWS.value)
     assert await regs.PARAMS.mean_only.read() == 1 - int(dut.ACCEL_FIT.value)
-    assert await regs.PARAMS.tracker.read() == int(dut.TRACKER.value)
+    assert await regs.PARAMS.tracker.read() == int(int(dut.TRACKER.value) != 0)
+    assert await regs.PARAMS.filtered_position.read() == int(int(dut.TRACKER.value) == 2)
     assert await regs.STATUS.valid.read() == 0 and await regs.STATUS.mode.read() == 0
     for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME", "SNAP_FINE_POS",
                  "SNAP_VELOCITY", "TRACK_ERRORS"):
@@ -501,12 +502,13 @@ def test_prenc_wb_with_a_calibration_table(simulator):
 
 
 @pytest.mark.parametrize("velocity", [{"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640}, {"ACCEL_FIT": 0},
-                                      {"TRACKER": 1}],
-                         ids=["quarter_windows", "without_the_fit", "tracker"])
+                                      {"TRACKER": 1}, {"TRACKER": 2}],
+                         ids=["quarter_windows", "without_the_fit", "tracker", "tracker_filtered_position"])
 def test_prenc_wb_velocity_configurations(velocity):
     """The other velocity configurations: QUARTER_WINDOWS = 1 (VELOCITY_WINDOW 640, as the
     bench at 30 MHz), ACCEL_FIT = 0 (the mean of two windows, for a small FPGA) and
-    TRACKER = 1 (prenc_tracker, its gain table for N = 10 at 30 MHz, an ideal disc). PARAMS
+    TRACKER = 1 (prenc_tracker, its gain table for N = 10 at 30 MHz, an ideal disc), and
+    TRACKER = 2 (the same, the fine position between edges the filter's). PARAMS
     says which, and at a steady turn the snapshots' fine position and velocity meet the
     same goals."""
     tests = "registers_after_reset_and_writes|the_snapshot_holds_the_fine_position_and_velocity_of_its_clock"

@@ -22,6 +22,9 @@ TRACKER = 1 the velocity is prenc_tracker's (prenc.fine.tracker.Tracker, its gai
 for N = 6 at 100 kHz, as in tb/fine/prenc_tracker), and the test counts its updates and
 stops instead; with CAL = 1 as well, the steps whose edge the table moves by another
 correction than the last edge's (the tracker's measured distance is not a whole quarter).
+With TRACKER = 2 the fine position between edges is the tracker's filtered position
+(its offset, delayed to meet the step prenc_fine_position takes: 2 clocks, none with
+CAL = 1), and the test counts the clocks it is taken.
 """
 
 from __future__ import annotations
@@ -126,10 +129,10 @@ async def matches_the_models_clock_by_clock(dut):
     gains = tracker_gains.read(os.environ["PRENC_GAIN_FILE"]) if tracker else None
     model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
                  timer_bits=TIMER_BITS, cal=cal, table=table, quarter_windows=quarter,
-                 accel_fit=fit, gains=gains)
+                 accel_fit=fit, gains=gains, filtered=int(tracker == 2))
     vel = model.velocity
     if tracker:
-        await tracker_matches(dut, model, inputs, total, seed, cal)
+        await tracker_matches(dut, model, inputs, total, seed, cal, tracker)
         return
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
              "cal_data")
@@ -170,18 +173,21 @@ async def matches_the_models_clock_by_clock(dut):
     assert not quarter or min(decisions.values()) > 0, decisions
 
 
-async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: int) -> None:
-    """TRACKER = 1: the outputs against the model, clock by clock; prenc_tracker's
-    updates and stops counted."""
+async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: int,
+                          tracker: int) -> None:
+    """TRACKER = 1 or 2: the outputs against the model, clock by clock; prenc_tracker's
+    updates and stops counted, and with TRACKER = 2 the clocks the fine position takes
+    the tracker's offset."""
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     vel = model.velocity
-    updates = stops = interpolated = corrected = 0
+    updates = stops = interpolated = corrected = filtered = 0
     columns = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in columns)))
         seq, phase, c_last = vel.seq, vel.phase, vel.c_last
+        filtered += model.offset_taken[1]
         model.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], now["illegal"],
                     write=now["cal_write"], address=now["cal_address"],
                     data=now["cal_data"] - ((now["cal_data"] & 0x8000) << 1))
@@ -190,14 +196,17 @@ async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: 
         corrected += int(vel.c_last != c_last)
         interpolated += model.interpolated
         await clock_and_check(dut, now, expected(model), lambda: f"seed {seed}, clock {c}")
-    dut._log.info("seed %d, CAL %d, TRACKER 1: %d clocks, %d updates, %d stops, %d interpolated, "
-                  "%d steps corrected", seed, cal, total, updates, stops, interpolated, corrected)
+    dut._log.info("seed %d, CAL %d, TRACKER %d: %d clocks, %d updates, %d stops, %d interpolated, "
+                  "%d steps corrected, %d clocks filtered", seed, cal, tracker, total, updates, stops,
+                  interpolated, corrected, filtered)
     assert updates > 200 and stops >= 2 and interpolated > total // 2
+    assert (filtered > total // 4) if tracker == 2 else filtered == 0
     assert (corrected > updates // 2) if cal else corrected == 0
 
 
 @pytest.mark.parametrize("cal, quarter, fit, tracker", [(0, 0, 1, 0), (1, 0, 1, 0), (0, 1, 1, 0), (1, 1, 1, 0),
-                                                        (0, 0, 0, 0), (1, 0, 0, 0), (0, 0, 1, 1), (1, 0, 1, 1)])
+                                                        (0, 0, 0, 0), (1, 0, 0, 0), (0, 0, 1, 1), (1, 0, 1, 1),
+                                                        (0, 0, 1, 2), (1, 0, 1, 2)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
 def test_prenc_fine(simulator, cal, quarter, fit, tracker):
     parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
