@@ -48,7 +48,10 @@ about v^2 a clock (a power of two from the leading one p of |vel| of the clock b
 2^(2p - 38) in 2^-40: v^2 to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter
 periods after the edge; there, or after no step for 2^TIMER_BITS - 1 clocks, the disc
 has stopped: the velocity reads 0 (valid) and the next step is an anchor. An illegal
-transition drops the velocity (`valid` 0) until the next estimate. With a calibration
+transition drops the velocity (`valid` 0) until the next estimate. `offset` is the
+filtered position past the last edge crossed (pos's top bits), valid while the filter
+tracks the way the disc last stepped and no edge is overdue: prenc_fine's TRACKER = 2
+makes it the fine position between edges. With a calibration
 table the first velocity is the quarter's true width over the clocks (its correction
 clamped to +-1/2 quarter).
 """

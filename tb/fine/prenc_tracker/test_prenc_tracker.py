@@ -26,7 +26,7 @@ import cocotb
 
 from common import clock_and_check, rng, start_clock_and_reset
 from prenc.fine import tracker_gains
-from prenc.fine.tracker import Tracker
+from prenc.fine.tracker import OFFSET_BITS, Tracker
 from prenc.virtual.fine_bench import sync_stream
 from prenc.virtual.trajectory import Trajectory
 from runner import SIM_BUILD, SIMULATORS, gains_file, run
@@ -105,7 +105,8 @@ async def matches_the_model_clock_by_clock(dut):
         seen["time-outs"] += int(since == model.timer_max and phase != model.NONE)
         seen["first velocities"] += int(phase == model.DIVIDE and model.phase == model.TRACK)
         expected = {"velocity": model.velocity & ((1 << 51) - 1),
-                    "accel": model.accel & ((1 << 50) - 1), "valid": model.valid}
+                    "accel": model.accel & ((1 << 50) - 1), "valid": model.valid,
+                    "offset": model.offset & ((1 << OFFSET_BITS) - 1), "offset_valid": model.offset_valid}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
     dut._log.info("seed %d: %d clocks, %s, columns %s, age bins %s", seed, total, seen,
                   sorted(columns), sorted(bins))
