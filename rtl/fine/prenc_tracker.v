@@ -33,7 +33,9 @@
 //   v^2 a clock (a power of two by |vel|'s leading one), reaching 0 within 2.25 to 3
 //   predicted quarter periods: a stop (0, valid; the next step is an anchor), as is no
 //   step for 2^TIMER_BITS - 1 clocks. An illegal transition drops the velocity (valid
-//   0) until the next estimate.
+//   0) until the next estimate. So do 3 measured updates in a row whose innovation is a
+//   quarter or more (the edges lost: a gain table for a smaller edge error than the
+//   disc's can leave the filter in a wrong state), until 3 in a row come closer.
 // Model: prenc.fine.tracker.Tracker, which this equals clock for clock.
 //
 // Latency: the velocity output is registered (the state of the clock before); an
@@ -54,12 +56,14 @@
 //                upper edges (after this cycle's step), signed, 2^-12 quarter
 //   velocity     quarters per clock, signed, 48 fractional bits (prenc_velocity's unit)
 //   accel        quarters per clock per clock, signed, 48 fractional bits
-//   valid        the velocity is an estimate (0 after reset and an illegal transition)
+//   valid        the velocity is an estimate (0 after reset, an illegal transition and
+//                while the edges are lost)
 //   offset       the filtered position: the predicted position past the last edge
 //                crossed, signed, 2^-24 quarter (pos's top 28 bits; prenc_fine's
 //                TRACKER = 2 makes it the fine position between edges)
 //   offset_valid the filter tracks and moves the way the disc last stepped, no edge
-//                overdue (both from the registers: the state after the clock before)
+//                overdue, the edges not lost, and it measured the last two steps (both
+//                from the registers: the state after the clock before)
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -160,6 +164,10 @@ module prenc_tracker #(
   reg signed [ZB-1:0] bias_reg;
   reg                 jump_reg;
   reg                 chase_reg;
+  reg                 lost_reg;        // the edges are lost: valid 0
+  reg                 measured_reg;    // the last two steps measured (offset_valid)
+  reg                 measured_last_reg;
+  reg [1:0]           lock_count_reg;  // updates in a row that disagree with lost_reg
   reg [5:0]           seq_reg;
   reg signed [EB-1:0] e_reg;
   reg [10:0]          address_reg;
@@ -362,8 +370,13 @@ module prenc_tracker #(
   wire signed [SB-1:0] e_sum      = d_wide - predicted;
   wire                 e_fits     = (e_sum[SB-1:EB+19] == {(SB - EB - 19){1'b0}}) ||
                                     (e_sum[SB-1:EB+19] == {(SB - EB - 19){1'b1}});
+  // The edges lost: LOST = 3 measured updates in a row whose innovation is a quarter or
+  // more (e >= 1 or e < -1); as many closer ones in a row find them again.
+  localparam [1:0]     LOST       = 2'd3;
   wire signed [EB-1:0] e_sat      = e_fits ? e_sum[EB+19:20]
                                            : {e_sum[SB-1], {(EB - 1){!e_sum[SB-1]}}};
+  wire                 far        = e_sat[EB-1] ? (e_sat[EB-1:20] != 3'b111)
+                                                : (e_sat[EB-2:20] != 2'b00);
   wire                 z_fits     = (shifted[RB-1:ZB-1] == {(RB - ZB + 1){1'b0}}) ||
                                     (shifted[RB-1:ZB-1] == {(RB - ZB + 1){1'b1}});
   wire signed [ZB-1:0] z          = z_fits ? shifted[ZB-1:0]
@@ -382,6 +395,10 @@ module prenc_tracker #(
   reg signed [ZB-1:0] bias_n;
   reg                 jump_n;
   reg                 chase_n;
+  reg                 lost_n;
+  reg                 measured_n;
+  reg                 measured_last_n;
+  reg [1:0]           lock_count_n;
   reg [5:0]           seq_n;
   reg signed [EB-1:0] e_n;
   reg [10:0]          address_n;
@@ -411,6 +428,10 @@ module prenc_tracker #(
     bias_n     = bias_reg;
     jump_n     = jump_reg;
     chase_n    = chase_reg;
+    lost_n     = lost_reg;
+    measured_n = measured_reg;
+    measured_last_n = measured_last_reg;
+    lock_count_n = lock_count_reg;
     seq_n      = (seq_reg != 6'd0) ? seq_reg + 6'd1 : 6'd0;
     e_n        = e_reg;
     address_n  = address_reg;
@@ -467,6 +488,8 @@ module prenc_tracker #(
       bias_n    = {ZB{1'b0}};
       jump_n    = 1'b0;
       chase_n   = 1'b0;
+      measured_n      = 1'b1;
+      measured_last_n = 1'b1;
     end
 
     // An overdue edge: the output decays to 0, a stop.
@@ -509,8 +532,19 @@ module prenc_tracker #(
       level_n    = {VB{1'b0}};
       if (phase_reg == P_TRACK && !stop) begin
         pos_n = pos_n - d_wide;
+        measured_n      = (seq_reg == 6'd0) && measured_last_reg;
+        measured_last_n = (seq_reg == 6'd0);
         if (seq_reg == 6'd0) begin
           e_n        = e_sat;
+          if (far != lost_reg) begin
+            lock_count_n = lock_count_reg + 2'd1;
+            if (lock_count_reg == LOST - 2'd1) begin
+              lost_n       = far;
+              lock_count_n = 2'd0;
+            end
+          end else begin
+            lock_count_n = 2'd0;
+          end
           address_n  = address;
           chase_n    = chase;
           age_n      = (chase || age_used == 10'd1023) ? age_used : age_used + 10'd1;
@@ -558,6 +592,10 @@ module prenc_tracker #(
     bias_reg     <= bias_n;
     jump_reg     <= jump_n;
     chase_reg    <= chase_n;
+    lost_reg     <= lost_n;
+    measured_reg <= measured_n;
+    measured_last_reg <= measured_last_n;
+    lock_count_reg <= lock_count_n;
     seq_reg      <= seq_n;
     e_reg        <= e_n;
     address_reg  <= address_n;
@@ -586,6 +624,10 @@ module prenc_tracker #(
       bias_reg     <= {ZB{1'b0}};
       jump_reg     <= 1'b0;
       chase_reg    <= 1'b0;
+      lost_reg     <= 1'b0;
+      measured_reg <= 1'b0;
+      measured_last_reg <= 1'b0;
+      lock_count_reg <= 2'd0;
       seq_reg      <= 6'd0;
       e_reg        <= {EB{1'b0}};
       address_reg  <= 11'd0;
@@ -606,9 +648,10 @@ module prenc_tracker #(
 
   assign velocity = {{1{velocity_reg[VB-1]}}, velocity_reg, 8'd0};
   assign accel    = {{10{acc_reg[AB-1]}}, acc_reg[AB-1:12]};
-  assign valid    = valid_reg;
+  assign valid    = valid_reg && !lost_reg;
   assign offset       = pos_reg[PB-1:PB-28];
-  assign offset_valid = (phase_reg == P_TRACK) && !decaying_reg && same;
+  assign offset_valid = (phase_reg == P_TRACK) && !decaying_reg && same && !lost_reg &&
+                        measured_reg;
 
   wire unused = &{1'b0, quotient[7:0], sh_wide[XB+23:RB], z_diff[1:0], shifted[RB-1:CB],
                   div_done, first_vel[SB-1:SB-6]};

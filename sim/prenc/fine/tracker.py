@@ -48,10 +48,14 @@ about v^2 a clock (a power of two from the leading one p of |vel| of the clock b
 2^(2p - 38) in 2^-40: v^2 to 4 v^2), which reaches 0 within 2.25 to 3 predicted quarter
 periods after the edge; there, or after no step for 2^TIMER_BITS - 1 clocks, the disc
 has stopped: the velocity reads 0 (valid) and the next step is an anchor. An illegal
-transition drops the velocity (`valid` 0) until the next estimate. `offset` is the
+transition drops the velocity (`valid` 0) until the next estimate. So do LOST = 3
+measured updates in a row whose innovation is a quarter or more (the filter has lost the
+edges: a gain table for a smaller edge error than the disc's can leave it in a wrong
+state, docs/fine.md), until as many in a row come closer. `offset` is the
 filtered position past the last edge crossed (pos's top bits), valid while the filter
-tracks the way the disc last stepped and no edge is overdue: prenc_fine's TRACKER = 2
-makes it the fine position between edges. With a calibration
+tracks the way the disc last stepped, no edge is overdue, the edges are not lost and it
+measured the last two steps: prenc_fine's TRACKER = 2 makes it the fine position between
+edges. With a calibration
 table the first velocity is the quarter's true width over the clocks (its correction
 clamped to +-1/2 quarter).
 """
@@ -81,6 +85,9 @@ assert DIV_CLOCKS < LOAD   # the division is done by then
 MANEUVER = 1 << 8          # |bias| above 1 sigma: the age halves
 JUMP = 4 << 8              # the last update's |z| above 4 sigma: the age drops to AGE_FLOOR
 CHASE = 1 << 7             # after a jump, the age holds while |bias| is above 1/2 sigma
+FAR = 1 << tg.INNOVATION_FRAC   # an innovation of a quarter or more (e >= 1 or e < -1)
+LOST = 3                   # updates in a row that far off: the edges are lost (`valid` 0);
+                           # as many closer ones in a row: found again
 
 # The sequence after a step (seq): the table's word (read, then registered once more:
 # a block RAM's output is slow), 12 multiplier clocks, 4 shifts (a gain a clock, the
@@ -129,7 +136,12 @@ class Tracker:
 
     def reset(self) -> None:
         self.phase = self.NONE
-        self.valid = 0
+        self.estimate = 0       # a velocity was estimated (the first one loaded, no illegal
+                                # transition since): `valid` unless the edges are lost
+        self.measured = 0       # the last two steps were measured (each an update; or the
+        self.measured_last = 0  # filter started after them): `offset` follows the edges
+        self.lost = 0           # the edges are lost: LOST updates in a row far off
+        self.lock_count = 0     # ... counted (and as many close ones to find them again)
         self.velocity = 0       # the output: quarters per clock, FRAC (48) fractional bits
         self.cw = 1             # the last step's direction
         self.c_last = 0         # the correction of the last edge crossed (CAL = 1)
@@ -176,6 +188,11 @@ class Tracker:
         return magnitude if self.cw else -magnitude
 
     @property
+    def valid(self) -> int:
+        """The velocity is an estimate: estimated, and the edges not lost."""
+        return int(self.estimate and not self.lost)
+
+    @property
     def offset(self) -> int:
         """The filtered position: the predicted position minus the last edge crossed, in
         2^-OFFSET_FRAC quarter (pos's top OFFSET_BITS bits), for prenc_fine_position."""
@@ -183,10 +200,13 @@ class Tracker:
 
     @property
     def offset_valid(self) -> int:
-        """The filter tracks and moves the way the disc last stepped, no edge overdue:
-        `offset` is its estimate (from the registers, as `offset` is)."""
+        """The filter tracks and moves the way the disc last stepped, no edge overdue,
+        the edges not lost, and it measured the last two steps (above about 13,700 rpm
+        at N = 10 and 30 MHz it measures some steps only: its position is then not
+        taken): `offset` is its estimate (from the registers, as `offset` is)."""
         same = self.vel > 0 if self.cw else self.vel < 0
-        return int(self.phase == self.TRACK and not self.decaying and same)
+        return int(self.phase == self.TRACK and not self.decaying and same and not self.lost
+                   and self.measured)
 
     @property
     def accel(self) -> int:
@@ -257,7 +277,8 @@ class Tracker:
             v = quotient >> (FRAC - STATE_FRAC)
             vel_n = -v if self.negative else v
             pos_n, acc_n = self.pos + vel_n * LOAD, 0
-            self.phase, self.valid, self.age, self.bias, self.jump, self.chase = self.TRACK, 1, 0, 0, 0, 0
+            self.phase, self.estimate, self.age, self.bias, self.jump, self.chase = self.TRACK, 1, 0, 0, 0, 0
+            self.measured = self.measured_last = 1
 
         # An overdue edge: the output decays to 0, a stop.
         stop = self.since == self.timer_max and phase != self.NONE
@@ -278,7 +299,7 @@ class Tracker:
 
         # Events, which win over all the above.
         if illegal:
-            self.phase, self.valid, self.decaying, self.level = self.NONE, 0, 0, 0
+            self.phase, self.estimate, self.decaying, self.level = self.NONE, 0, 0, 0
             pos_n = vel_n = acc_n = 0
             seq_n, cancel, since_n = 0, 1, 1
         elif step:
@@ -291,9 +312,18 @@ class Tracker:
             if phase == self.TRACK and not stop:
                 predicted = self.pos + self.vel
                 pos_n = pos_n - moved
+                self.measured = int(seq == 0 and self.measured_last)
+                self.measured_last = int(seq == 0)
                 if seq == 0:
                     e = (moved - predicted) >> (STATE_FRAC - tg.INNOVATION_FRAC)
                     self.e = clamp(e, E_BITS)
+                    far = self.e >= FAR or self.e < -FAR
+                    if far != bool(self.lost):
+                        self.lock_count += 1
+                        if self.lock_count == LOST:
+                            self.lost, self.lock_count = int(far), 0
+                    else:
+                        self.lock_count = 0
                     age = self.age
                     if self.jump:
                         age = AGE_FLOOR

@@ -182,8 +182,11 @@ def render(n: int = 10, clk_hz: float = 30e6, sigma: float = SIGMA["ideal"]) -> 
 
 
 def write(path: str | Path, n: int = 10, clk_hz: float = 30e6, sigma: float = SIGMA["ideal"]) -> None:
-    """The table as a $readmemh file."""
-    Path(path).write_bytes(render(n, clk_hz, sigma))
+    """The table as a $readmemh file, written whole (a temporary file renamed into
+    place: a simulation reading it meanwhile sees the old file or the new one)."""
+    from ..codes.rom import write_atomically
+
+    write_atomically(path, lambda: render(n, clk_hz, sigma))
 
 
 def read(path: str | Path) -> list[int]:

@@ -104,3 +104,18 @@ def test_tracker_parameters_out_of_range_are_refused(kwargs, message):
 def test_the_filtered_position_needs_the_tracker():
     with pytest.raises(ValueError, match="filtered = 1"):
         Fine(filtered=1)
+
+
+@pytest.mark.parametrize("rpm", [600, 6000])
+def test_a_filter_that_lost_the_edges_says_so(rpm):
+    # The ideal disc's gain table (sigma 0.01 quarter) on the printed disc: the filter
+    # falls into a wrong state (docs/fine.md). Its innovations stay a quarter and more,
+    # and the velocity is not valid: of the clocks where it is more than 50 % off the
+    # true speed, at most 1 % read as valid.
+    theta = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(rpm), 30 / fb.rpm(rpm)).theta
+    sync = fb.sync_stream(theta, fb.PRINTED)
+    out = fb.run_fine(sync, gains=table("ideal"))
+    c = np.arange(len(theta) // 4, len(theta) - 1)
+    wrong = np.abs(velocity_error(theta, out["velocity"], c)) > 50
+    assert wrong.mean() > 0.5   # the trap is there ...
+    assert out["velocity_valid"][c][wrong].mean() <= 0.01   # ... and flagged

@@ -8,7 +8,8 @@ The stimulus is what the core gives the block on a disc that starts at rest, tur
 steadily long enough for the filter's age to reach the table's last bins, changes
 speed at once (a maneuver: a jump of the innovation sets the age back and the filter
 chases; the innovations' mean halves the age), turns faster than an update takes (steps
-that only refer the position), reverses smoothly and at once, wanders, stops (an edge
+that only refer the position: `offset_valid` 0), reverses smoothly and at once (after
+which the filter loses the edges, `valid` 0, and finds them again), wanders, stops (an edge
 overdue: the decay to 0) and rests, with a lone step in the rest (an anchor and no
 second step: the time-out); a few illegal transitions
 (missed states) are mixed in, one in the fast stretch (the start again at speed: steps
@@ -79,13 +80,15 @@ async def matches_the_model_clock_by_clock(dut):
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     seen = {"updates": 0, "referred only": 0, "maneuvers": 0, "jumps": 0, "chases": 0,
             "decays": 0, "stops": 0,
-            "time-outs": 0, "first velocities": 0, "steps while dividing": 0}
+            "time-outs": 0, "first velocities": 0, "steps while dividing": 0,
+            "edges lost": 0, "edges found again": 0, "clocks offset_valid": 0}
     columns, bins = set(), set()
     data = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in data)))
         before = (model.phase, model.seq, model.decaying, model.bias, model.since, model.jump,
                   model.chase)
+        lost = model.lost
         model.clock(now["step"], now["step_cw"], now["illegal"])
         phase, seq, decaying, bias, since, jump, chase = before
         if now["step"] and phase == model.TRACK:
@@ -104,6 +107,9 @@ async def matches_the_model_clock_by_clock(dut):
         seen["stops"] += int(phase == model.TRACK and model.phase == model.NONE and not now["illegal"])
         seen["time-outs"] += int(since == model.timer_max and phase != model.NONE)
         seen["first velocities"] += int(phase == model.DIVIDE and model.phase == model.TRACK)
+        seen["edges lost"] += int(model.lost and not lost)
+        seen["edges found again"] += int(lost and not model.lost)
+        seen["clocks offset_valid"] += model.offset_valid
         expected = {"velocity": model.velocity & ((1 << 51) - 1),
                     "accel": model.accel & ((1 << 50) - 1), "valid": model.valid,
                     "offset": model.offset & ((1 << OFFSET_BITS) - 1), "offset_valid": model.offset_valid}
