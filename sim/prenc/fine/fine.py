@@ -46,7 +46,7 @@ class Fine:
             raise ValueError(f"filtered = {filtered} must be 0, or 1 with a gain table")
         self.filtered = filtered
         self.cal = cal
-        if gains is not None:   # TRACKER = 1: prenc_tracker with this gain table
+        if gains is not None:   # TRACKER = 1 or 2: prenc_tracker with this gain table
             self.velocity = Tracker(gains, timer_bits=timer_bits, cal_bits=CAL_BITS if cal else 0)
         else:
             self.velocity = Velocity(window=window, timer_bits=timer_bits,

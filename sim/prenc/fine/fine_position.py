@@ -9,7 +9,7 @@ valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 
 - travel: the velocity integrated since pos_hyb's last step (FRAC bits, saturating
   at 2 quarters); or, while `offset_valid`, `offset`: a tracking filter's estimate of
-  the position past the last edge crossed (prenc_tracker's, TRACKER = 1), which
+  the position past the last edge crossed (prenc_tracker's, TRACKER = 2), which
   averages many edges where one edge and the velocity carry the edge's own error.
   When the filter stops tracking (an edge overdue, a stop: its velocity 0), travel
   goes on from there with the velocity.
