@@ -561,10 +561,11 @@ def cal_section() -> bool:
           f"{zero:+.5f} slot from the shaft's (taken off the calibrated errors below)")
     print("\n   c. Applied: position error in slots (RMS / max), velocity error in % (RMS / max)")
     print("      (calibrated: the default full-cycle windows; quarter: QUARTER_WINDOWS = 1, WINDOW "
-          f"{fb.QUARTER_WINDOW}; tracker: TRACKER = 1, the ideal disc's gain table; all with the table)")
+          f"{fb.QUARTER_WINDOW}; tracker: TRACKER = 1, the ideal disc's gain table; TRACKER = 2: the same,")
+    print("      the fine position between edges the filter's (its velocity is TRACKER = 1's); all with the table)")
     print(f"   {'scenario':<34} {'coarse':>15} {'uncalibrated pos':>17} {'uncalibrated vel %':>19} "
           f"{'calibrated pos':>17} {'calibrated vel %':>17} {'quarter pos':>17} {'quarter vel %':>17} "
-          f"{'tracker pos':>17} {'tracker vel %':>17}")
+          f"{'tracker pos':>17} {'tracker vel %':>17} {'TRACKER = 2 pos':>17}")
     rows = {}
     for case in fb.cases():
         r = cb.evaluate(case, result.table.c, zero)
@@ -577,7 +578,8 @@ def cal_section() -> bool:
               f"{r['calibrated quarter'].fine[0]:>9.5f}/{r['calibrated quarter'].fine[1]:.4f} "
               f"{r['calibrated quarter'].velocity[0]:>9.4f}/{r['calibrated quarter'].velocity[1]:.3f} "
               f"{r['calibrated tracker'].fine[0]:>9.5f}/{r['calibrated tracker'].fine[1]:.4f} "
-              f"{r['calibrated tracker'].velocity[0]:>9.4f}/{r['calibrated tracker'].velocity[1]:.3f}")
+              f"{r['calibrated tracker'].velocity[0]:>9.4f}/{r['calibrated tracker'].velocity[1]:.3f} "
+              f"{r['calibrated tracker 2'].fine[0]:>9.5f}/{r['calibrated tracker 2'].fine[1]:.4f}")
     print(f"   ({time.perf_counter() - t0:.0f} s)")
 
     def verdict(ok: bool) -> str:

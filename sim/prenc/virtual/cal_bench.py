@@ -66,13 +66,14 @@ def bench_table(c_true: np.ndarray) -> Result:
 
 
 def run_calibrated(sync: fb.Sync, c: np.ndarray, quarter_windows: int = 0,
-                   gains: list[int] | None = None) -> dict[str, np.ndarray]:
+                   gains: list[int] | None = None, filtered: int = 0) -> dict[str, np.ndarray]:
     """fine_bench.run_fine through prenc_fine with CAL = 1 and the table c (in
     2^-12 quarters): the model of the RTL, clock by clock, in either configuration, or
-    with `gains` (a gain table's words) with the tracker (TRACKER = 1)."""
+    with `gains` (a gain table's words) with the tracker (TRACKER = 1; with `filtered`,
+    TRACKER = 2: the fine position between edges is the tracker's)."""
     fine = Fine(n=N, fine_bits=fb.FINE_BITS, lookahead_halves=fb.LOOKAHEAD_HALVES,
                 window=fb.default_window(quarter_windows), cal=1, table=c,
-                quarter_windows=quarter_windows, gains=gains)
+                quarter_windows=quarter_windows, gains=gains, filtered=filtered)
     total = len(sync.step)
     v_out = np.zeros(total)
     fine_pos = np.zeros(total, dtype=np.int64)
@@ -86,18 +87,22 @@ def run_calibrated(sync: fb.Sync, c: np.ndarray, quarter_windows: int = 0,
 
 
 def evaluate(case: fb.Case, table_c: np.ndarray, zero: float) -> dict[str, fb.Row]:
-    """Ours without and with the table on the printed disc (with the table in three
+    """Ours without and with the table on the printed disc (with the table in four
     configurations: full-cycle windows, quarter windows, and the tracker with the ideal
-    disc's gain table: the calibrated disc's edges are as good); `zero` (slots) is the
+    disc's gain table, the calibrated disc's edges being as good, as TRACKER = 1 and as
+    TRACKER = 2); `zero` (slots) is the
     calibration's zero against the truth, taken off the calibrated position's error."""
     sync = fb.sync_stream(case.theta, fb.PRINTED)
     scale = 1 << fb.FINE_BITS
     plain = fb.run_fine(sync)
     cal = run_calibrated(sync, table_c)
     quarter = run_calibrated(sync, table_c, quarter_windows=1)
-    tracker = run_calibrated(sync, table_c, gains=tracker_gains.table(N, fb.CLK_HZ, tracker_gains.SIGMA["ideal"]))
+    gains = tracker_gains.table(N, fb.CLK_HZ, tracker_gains.SIGMA["ideal"])
+    tracker = run_calibrated(sync, table_c, gains=gains)
+    filtered = run_calibrated(sync, table_c, gains=gains, filtered=1)
     return {"coarse": fb.score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "uncalibrated": fb.score(case, sync, plain["fine"] / scale, plain["velocity"]),
             "calibrated": fb.score(case, sync, cal["fine"] / scale - 4 * zero, cal["velocity"]),
             "calibrated quarter": fb.score(case, sync, quarter["fine"] / scale - 4 * zero, quarter["velocity"]),
-            "calibrated tracker": fb.score(case, sync, tracker["fine"] / scale - 4 * zero, tracker["velocity"])}
+            "calibrated tracker": fb.score(case, sync, tracker["fine"] / scale - 4 * zero, tracker["velocity"]),
+            "calibrated tracker 2": fb.score(case, sync, filtered["fine"] / scale - 4 * zero, filtered["velocity"])}
