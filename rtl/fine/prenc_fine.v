@@ -105,7 +105,7 @@ module prenc_fine #(
     end
     if (TRACKER < 0 || TRACKER > 2) begin : g_bad_tracker
       initial $display("ERROR: %m: parameter TRACKER = %0d is out of range 0..2", TRACKER);
-      prenc_fine_parameter_TRACKER_must_be_0_or_1 u_stop ();
+      prenc_fine_parameter_TRACKER_out_of_range_0_to_2 u_stop ();
     end
     if (TRACKER != 0 && ENABLE != 1) begin : g_bad_tracker_enable
       initial $display("ERROR: %m: parameter TRACKER = %0d needs ENABLE = 1", TRACKER);

@@ -64,15 +64,15 @@ from __future__ import annotations
 
 from ..cal.table import FRAC as CAL_BITS   # the calibration's corrections: 2^-12 quarter
 from . import tracker_gains as tg
+from .fine_position import OFFSET_FRAC   # the offset output: pos's top bits, 2^-24 quarter
 from .velocity import DIV_CLOCKS, FRAC, Divider, saturate
 
 POS_BITS = 44              # pos: signed, 2^-40 quarter (+-8 quarters)
-OFFSET_FRAC = 24           # the offset output: pos's top bits, 2^-24 quarter
-OFFSET_BITS = POS_BITS - (40 - OFFSET_FRAC)
 CORR_BITS = 46             # the position's and the velocity's corrections, 2^-40
 VEL_BITS = 42              # vel: signed, 2^-40 quarter per clock
 ACC_BITS = 52              # acc: signed, 2^-60 quarter per clock^2
 STATE_FRAC = 40
+OFFSET_BITS = POS_BITS - (STATE_FRAC - OFFSET_FRAC)
 ACC_SHIFT = 20             # acc's extra fractional bits
 E_BITS = 23                # the innovation: signed, 2^-20 quarter
 RESULT_BITS = 52           # a correction from the shifter
