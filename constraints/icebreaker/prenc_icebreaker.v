@@ -25,7 +25,8 @@ module prenc_icebreaker #(
   parameter [31:0]  TAPS     = 32'h0000_0204,
   parameter integer FILTER   = 2,
   parameter         ROM_FILE = "prenc_rom_n10.hex",
-  parameter integer BAUD     = 115200
+  parameter integer BAUD     = 115200,
+  parameter integer FINE     = 1
 ) (
   input  wire CLK,
   input  wire BTN_N,
@@ -96,7 +97,9 @@ module prenc_icebreaker #(
     .ROM_FILE (ROM_FILE),
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
-    .FINE     (0)  // the UP5K's 5,280 cells: the board 3,138 LC, with prenc_fine 6,240 LUT4
+    .FINE         (FINE),
+    .PERIOD       (1),
+    .EDGE_CAPTURE (0)
   ) u_board (
     .clk             (clk),
     .rst             (rst),

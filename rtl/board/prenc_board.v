@@ -37,6 +37,9 @@
 //   HOST_LINK     1: the host link and the edges' capture are built (default); 0: not
 //                 (uart_tx idles high, uart_rx is unused, the error counters are never
 //                 cleared: the iCEstick's HX1K has no room for the link's ~1,000 cells)
+//   EDGE_CAPTURE  1: with the host link, the edges' capture for a calibration run
+//                 (`prenc calibrate`; default); 0: not (the EDGES answer has no run: the
+//                 iCEBreaker's UP5K keeps its ~500 cells for prenc_fine)
 //   FINE          1: prenc_fine is built (fine position, velocity; default); 0: not (SSI
 //                 and BiSS-C send pos_hyb: the iCEBreaker's UP5K has no room for it)
 //   FINE_BITS     fraction bits of the quarter in SSI's and BiSS-C's position, 0..8
@@ -57,6 +60,8 @@
 //                 is the filter's (a printed disc without a table); 0: prenc_velocity
 //                 (default)
 //   GAIN_FILE     with TRACKER = 1 or 2: the gain table ($readmemh)
+//   PERIOD        prenc_fine's: 1, the velocity from prenc_period, the period of the sync
+//                 track's last cycle (a small FPGA: the iCEBreaker); 0: not (default)
 //   CAL           1: the fine position and the velocity use the sync track's calibration
 //                 table (docs/calibration.md; needs FINE = 1), written over the host
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
@@ -94,6 +99,7 @@ module prenc_board #(
   parameter integer BISS_HYBRID     = 1,
   parameter integer BISS_TIMEOUT_US = 20,
   parameter integer HOST_LINK       = 1,
+  parameter integer EDGE_CAPTURE    = 1,
   parameter integer FINE            = 1,
   parameter integer FINE_BITS       = 0,
   parameter integer EXTRAPOLATE     = 1,
@@ -102,6 +108,7 @@ module prenc_board #(
   parameter integer ACCEL_FIT       = 1,
   parameter integer TRACKER         = 0,
   parameter         GAIN_FILE       = "prenc_gains_n10_30mhz.hex",
+  parameter integer PERIOD          = 0,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
@@ -162,6 +169,10 @@ module prenc_board #(
     if (HOST_LINK < 0 || HOST_LINK > 1) begin : g_bad_host_link
       initial $display("ERROR: %m: parameter HOST_LINK = %0d must be 0 or 1", HOST_LINK);
       prenc_board_parameter_HOST_LINK_must_be_0_or_1 u_stop ();
+    end
+    if (EDGE_CAPTURE < 0 || EDGE_CAPTURE > 1) begin : g_bad_edge_capture
+      initial $display("ERROR: %m: parameter EDGE_CAPTURE = %0d must be 0 or 1", EDGE_CAPTURE);
+      prenc_board_parameter_EDGE_CAPTURE_must_be_0_or_1 u_stop ();
     end
     if (FINE < 0 || FINE > 1) begin : g_bad_fine
       initial $display("ERROR: %m: parameter FINE = %0d must be 0 or 1", FINE);
@@ -273,6 +284,7 @@ module prenc_board #(
     .ACCEL_FIT        (ACCEL_FIT),
     .TRACKER          (TRACKER),
     .GAIN_FILE        (GAIN_FILE),
+    .PERIOD           (PERIOD),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)
@@ -311,26 +323,38 @@ module prenc_board #(
       wire [15:0]  link_errors;
       wire         snapshot;
 
-      prenc_edge_capture #(
-        .N (N)
-      ) u_edges (
-        .clk       (clk),
-        .rst       (rst),
-        .step      (sync_step),
-        .step_cw   (direction),
-        .illegal   (sync_illegal),
-        .pos_hyb   (pos_hyb),
-        .pos_valid (valid),
-        .take      (edge_take),
-        .run       (edge_run),
-        .run_valid (edge_valid),
-        .run_cw    (edge_cw),
-        .run_edge  (edge_first),
-        .interval0 (edge_interval0),
-        .interval1 (edge_interval1),
-        .interval2 (edge_interval2),
-        .lost      (edge_lost)
-      );
+      if (EDGE_CAPTURE == 1) begin : g_edge_capture
+        prenc_edge_capture #(
+          .N (N)
+        ) u_edges (
+          .clk       (clk),
+          .rst       (rst),
+          .step      (sync_step),
+          .step_cw   (direction),
+          .illegal   (sync_illegal),
+          .pos_hyb   (pos_hyb),
+          .pos_valid (valid),
+          .take      (edge_take),
+          .run       (edge_run),
+          .run_valid (edge_valid),
+          .run_cw    (edge_cw),
+          .run_edge  (edge_first),
+          .interval0 (edge_interval0),
+          .interval1 (edge_interval1),
+          .interval2 (edge_interval2),
+          .lost      (edge_lost)
+        );
+      end else begin : g_no_edge_capture
+        assign edge_run       = 2'd0;
+        assign edge_valid     = 1'b0;
+        assign edge_cw        = 1'b0;
+        assign edge_first     = {(N + 2){1'b0}};
+        assign edge_interval0 = 16'd0;
+        assign edge_interval1 = 16'd0;
+        assign edge_interval2 = 16'd0;
+        assign edge_lost      = 1'b0;
+        wire unused_edges = &{1'b0, edge_take};
+      end
 
       prenc_host_link #(
         .N      (N),

@@ -2,7 +2,7 @@
 // prenc_fine: fine position and velocity beside the core (docs/fine.md).
 //
 //   prenc_core: sync_step, direction, sync_illegal -> prenc_velocity -> velocity, accel
-//                                  (TRACKER = 1, 2: prenc_tracker)
+//                                  (TRACKER = 1, 2: prenc_tracker; PERIOD = 1: prenc_period)
 //               pos_hyb, pos_valid ------------------> prenc_fine_position -> fine_pos
 //
 // The core stays the judge of the position: fine_pos's quarter is pos_hyb's while
@@ -41,6 +41,10 @@
 //              or two, printed and not calibrated: it averages the edges' errors;
 //              docs/fine.md); 1 and 0: the last edge and the velocity
 //   GAIN_FILE  with TRACKER = 1 or 2: the gain table ($readmemh)
+//   PERIOD     1: the velocity from prenc_period instead, the period of the sync track's
+//              last cycle (the dVRK firmware's method: about a tenth of prenc_velocity's
+//              logic, for a small FPGA such as the iCEBreaker's UP5K; accel 0; needs
+//              TRACKER = 0 and CAL = 0; TIMER_BITS is its); 0: not (default)
 //   ENABLE     1: the blocks are built (default); 0: not (a device with no room for
 //              them): fine_pos is pos_hyb (FINE_BITS must be 0), the velocity 0, not valid
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
@@ -66,6 +70,7 @@ module prenc_fine #(
   parameter integer ACCEL_FIT        = 1,
   parameter integer TRACKER          = 0,
   parameter         GAIN_FILE        = "prenc_gains_n10_30mhz.hex",
+  parameter integer PERIOD           = 0,
   parameter integer ENABLE           = 1,
   parameter integer CAL              = 0,
   parameter         CAL_FILE         = ""
@@ -118,6 +123,14 @@ module prenc_fine #(
     if (CAL == 1 && ENABLE == 0) begin : g_bad_cal_enable
       initial $display("ERROR: %m: parameter CAL = 1 needs ENABLE = 1");
       prenc_fine_parameter_CAL_needs_ENABLE_1 u_stop ();
+    end
+    if (PERIOD != 0 && PERIOD != 1) begin : g_bad_period
+      initial $display("ERROR: %m: parameter PERIOD = %0d must be 0 or 1", PERIOD);
+      prenc_fine_parameter_PERIOD_must_be_0_or_1 u_stop ();
+    end
+    if (PERIOD == 1 && (ENABLE != 1 || TRACKER != 0 || CAL != 0)) begin : g_bad_period_with
+      initial $display("ERROR: %m: parameter PERIOD = 1 needs ENABLE = 1, TRACKER = 0, CAL = 0");
+      prenc_fine_parameter_PERIOD_needs_ENABLE_1_TRACKER_0_CAL_0 u_stop ();
     end
   endgenerate
 
@@ -285,6 +298,22 @@ module prenc_fine #(
           assign offset_valid = 1'b0;
           wire unused_offset = &{1'b0, t_offset, t_offset_valid};
         end
+      end else if (PERIOD == 1) begin : g_period
+        prenc_period #(
+          .TIMER_BITS (TIMER_BITS)
+        ) u_period (
+          .clk      (clk),
+          .rst      (rst),
+          .step     (v_step),
+          .step_cw  (v_step_cw),
+          .illegal  (v_illegal),
+          .velocity (velocity),
+          .valid    (velocity_valid)
+        );
+        assign accel        = 50'd0;
+        assign offset       = 28'd0;
+        assign offset_valid = 1'b0;
+        wire unused_period = &{1'b0, v_c_lo, v_c_hi};
       end else begin : g_velocity
         prenc_velocity #(
           .WINDOW     (WINDOW),

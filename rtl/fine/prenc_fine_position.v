@@ -3,8 +3,9 @@
 // extrapolated to the instant a consumer asks.
 //
 // - travel: the velocity integrated since pos_hyb's last step (FRAC = 48 fractional
-//   bits of a quarter, saturating at 2 quarters). The decoder's step is delayed
-//   STEP_DELAY = 3 cycles, so that travel restarts on the cycle pos_hyb shows the step.
+//   bits of a quarter; it stops once it is 2 quarters or more, past any clamp below).
+//   The decoder's step is delayed STEP_DELAY = 3 cycles, so that travel restarts on the
+//   cycle pos_hyb shows the step.
 //   While offset_valid, travel is `offset` instead: a tracking filter's estimate of the
 //   position past the last edge crossed (prenc_tracker's, prenc_fine's TRACKER = 2),
 //   which averages many edges where one edge and the velocity carry that edge's own
@@ -22,7 +23,7 @@
 // fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
 // h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter.
 // Three register stages, so that no two long carry chains follow each other: (A) the
-// fraction clamped (by its bits: it lies in (-2, 3) quarters) with pos_hyb and the
+// fraction clamped (by its bits: it lies within 9 quarters of 0) with pos_hyb and the
 // flags, (B) plus the extrapolation, (C) the output, OUTPUT_DELAY = 3 clocks after
 // pos_hyb. The extrapolation velocity x LOOKAHEAD_HALVES comes from a registered adder
 // tree of three levels (the velocity of three clocks before).
@@ -162,7 +163,7 @@ module prenc_fine_position #(
         else clamped = edge_travel;
       end
     end else begin : g_clamp
-      // By its bits: edge + travel is in (-2, 3) quarters: negative, 1 and above, or in
+      // By its bits: edge + travel lies within 9 quarters of 0: negative, 1 and above, or in
       // the quarter.
       wire above = !edge_travel[LB] && (edge_travel[LB-1:FRAC] != {(LB - FRAC){1'b0}});
       always @(*) begin
@@ -189,10 +190,12 @@ module prenc_fine_position #(
                                      (CAL == 1) ? mid_trunc[W-1:0] : MIDDLE;
   wire [W-1:0]         base        = {pos_b_reg, {F{1'b0}}};
   wire signed [LB-1:0] travel_sum  = travel_reg + {{(LB - 51){velocity[50]}}, velocity};
-  // |travel_sum| < 2 quarters, by its bits.
-  wire                 travel_in   = (travel_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b0}}) ||
-                                     ((travel_sum[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
-                                      (travel_sum[FRAC:0] != {(FRAC + 1){1'b0}}));
+  // |travel| < 2 quarters, by its bits (the register's, not the sum's: the test beside
+  // the carry chain, not after it; travel stops within a velocity past 2 quarters,
+  // |velocity| < 4, so it stays within LB bits).
+  wire                 travel_in   = (travel_reg[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b0}}) ||
+                                     ((travel_reg[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
+                                      (travel_reg[FRAC:0] != {(FRAC + 1){1'b0}}));
   // The quarters above pos_hyb's wrap.
   wire                 unused_ok   = &{1'b0, truncated[XB-1:W], mid_trunc[LB:W], edge_sum[0]};
 

@@ -85,6 +85,7 @@ BAD_PARAMETERS = [
     ("prenc_board", "DUAL_VOTES", 8),
     ("prenc_velocity", "ACCEL_FIT", 2), ("prenc_board", "ACCEL_FIT", 2),
     ("prenc_tracker", "TIMER_BITS", 40), ("prenc_tracker", "CAL", 2), ("prenc_fine", "TRACKER", 3),
+    ("prenc_period", "TIMER_BITS", 11), ("prenc_fine", "PERIOD", 2), ("prenc_board", "EDGE_CAPTURE", 2),
 ]
 
 

@@ -24,6 +24,7 @@ from ..cal.decoder_quarter import DecoderQuarter
 from ..cal.lookup import CalLookup
 from ..cal.table import FRAC as CAL_BITS   # the table's fractional bits
 from .fine_position import FinePosition
+from .period import Period
 from .tracker import Tracker
 from .velocity import FRAC, Velocity
 
@@ -39,14 +40,18 @@ class Fine:
     def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
                  window: int = 2048, timer_bits: int = 26, cal: int = 0, table=None,
                  quarter_windows: int = 0, accel_fit: int = 1, gains: list[int] | None = None,
-                 filtered: int = 0):
+                 filtered: int = 0, period: int = 0):
         if cal not in (0, 1):
             raise ValueError(f"cal = {cal} must be 0 or 1")
         if filtered not in (0, 1) or (filtered and gains is None):
             raise ValueError(f"filtered = {filtered} must be 0, or 1 with a gain table")
+        if period not in (0, 1) or (period and (gains is not None or cal)):
+            raise ValueError(f"period = {period} must be 0, or 1 without a gain table and CAL")
         self.filtered = filtered
         self.cal = cal
-        if gains is not None:   # TRACKER = 1 or 2: prenc_tracker with this gain table
+        if period:           # PERIOD = 1: prenc_period
+            self.velocity = Period(timer_bits=timer_bits)
+        elif gains is not None:   # TRACKER = 1 or 2: prenc_tracker with this gain table
             self.velocity = Tracker(gains, timer_bits=timer_bits, cal_bits=CAL_BITS if cal else 0)
         else:
             self.velocity = Velocity(window=window, timer_bits=timer_bits,

@@ -7,8 +7,8 @@ registered step and step_cw (the block delays them STEP_DELAY cycles, so that th
 step meets pos_hyb, which shows it 4 cycles after the decoder); the velocity and its
 valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
 
-- travel: the velocity integrated since pos_hyb's last step (FRAC bits, saturating
-  at 2 quarters); or, while `offset_valid`, `offset`: a tracking filter's estimate of
+- travel: the velocity integrated since pos_hyb's last step (FRAC bits; it stops
+  once it is 2 quarters or more, past any clamp below); or, while `offset_valid`, `offset`: a tracking filter's estimate of
   the position past the last edge crossed (prenc_tracker's, TRACKER = 2), which
   averages many edges where one edge and the velocity carry the edge's own error.
   When the filter stops tracking (an edge overdue, a stop: its velocity 0), travel
@@ -32,7 +32,7 @@ verified quarter by at most the table's largest correction (plus the extrapolati
 They are 0 without a table (CAL = 0).
 
 Three register stages, so that no two long carry chains follow each other: (A) the
-fraction clamped (by its bits: it lies in (-2, 3) quarters), with pos_hyb and the
+fraction clamped (by its bits: it lies within 9 quarters of 0), with pos_hyb and the
 flags; (B) the fraction plus the extrapolation; (C) the output. The extrapolation,
 velocity x LOOKAHEAD_HALVES, comes from a registered adder tree of three levels: it
 uses the velocity of three clocks before. The output is OUTPUT_DELAY = 3 clocks after
@@ -112,9 +112,7 @@ class FinePosition:
             self.travel = offset << (FRAC - OFFSET_FRAC)
         elif self.step_d[-1]:
             self.travel = 0
-        else:
-            travel = self.travel + velocity
-            if abs(travel) < LEAD_LIMIT:
-                self.travel = travel
+        elif abs(self.travel) < LEAD_LIMIT:   # (the test on the register: no long path)
+            self.travel += velocity
         self.step_d = [step] + self.step_d[:-1]
         self.cw_d = [step_cw] + self.cw_d[:-1]

@@ -114,7 +114,9 @@ class Divider:
     that needs more than QUOTIENT_BITS bits (or den = 0) saturates to all ones; `cancel`
     drops a division under way, and one starting in the same cycle."""
 
-    def __init__(self) -> None:
+    def __init__(self, quotient_bits: int = QUOTIENT_BITS) -> None:
+        self.quotient_bits = quotient_bits
+        self.clocks = quotient_bits + 2   # from a start's cycle to its done cycle
         self.left = 0
         self.result = 0
         self.done = 0
@@ -127,9 +129,9 @@ class Divider:
             if self.left == 0:
                 self.done, self.quotient = 1, self.result
         if start:
-            limit = (1 << QUOTIENT_BITS) - 1
+            limit = (1 << self.quotient_bits) - 1
             self.result = limit if den == 0 or num // den > limit else num // den
-            self.left = DIV_CLOCKS - 1
+            self.left = self.clocks - 1
         if cancel:
             self.left = 0
 

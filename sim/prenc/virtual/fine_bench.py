@@ -115,14 +115,14 @@ def default_window(quarter_windows: int) -> int:
 def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
              lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N,
              quarter_windows: int = 0, accel_fit: int = 1,
-             gains: list[int] | None = None, filtered: int = 0) -> dict[str, np.ndarray]:
+             gains: list[int] | None = None, filtered: int = 0, period: int = 0) -> dict[str, np.ndarray]:
     """The model of prenc_fine (prenc_velocity and prenc_fine_position), clock by clock
     (window: default_window(quarter_windows) unless given); with `gains` (a gain table's
     words), prenc_tracker's model instead of prenc_velocity's (TRACKER = 1; with
     `filtered`, TRACKER = 2: the fine position between edges is the tracker's)."""
     fine = Fine(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves,
                 window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
-                accel_fit=accel_fit, gains=gains, filtered=filtered)
+                accel_fit=accel_fit, gains=gains, filtered=filtered, period=period)
     vel = fine.velocity
     total = len(sync.step)
     v_out = np.zeros(total)

@@ -24,7 +24,10 @@ stops instead; with CAL = 1 as well, the steps whose edge the table moves by ano
 correction than the last edge's (the tracker's measured distance is not a whole quarter).
 With TRACKER = 2 the fine position between edges is the tracker's filtered position
 (its offset, delayed to meet the step prenc_fine_position takes: 2 clocks, none with
-CAL = 1), and the test counts the clocks it is taken.
+CAL = 1), and the test counts the clocks it is taken. With PERIOD = 1 the velocity is
+prenc_period's (prenc.fine.period.Period), and the test counts its divisions for a step
+and for a bound (overdue), its stops after four intervals without a step and its
+reversals.
 """
 
 from __future__ import annotations
@@ -124,13 +127,17 @@ async def matches_the_models_clock_by_clock(dut):
     quarter = int(dut.QUARTER_WINDOWS.value)
     fit = int(dut.ACCEL_FIT.value)
     tracker = int(dut.TRACKER.value)
+    period = int(dut.PERIOD.value)
     inputs, total = stimulus(seed, cal)
     table = read(os.environ["PRENC_CAL_FILE"], n=N).c if cal else None
     gains = tracker_gains.read(os.environ["PRENC_GAIN_FILE"]) if tracker else None
     model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
                  timer_bits=TIMER_BITS, cal=cal, table=table, quarter_windows=quarter,
-                 accel_fit=fit, gains=gains, filtered=int(tracker == 2))
+                 accel_fit=fit, gains=gains, filtered=int(tracker == 2), period=period)
     vel = model.velocity
+    if period:
+        await period_matches(dut, model, inputs, total, seed)
+        return
     if tracker:
         await tracker_matches(dut, model, inputs, total, seed, cal, tracker)
         return
@@ -204,14 +211,42 @@ async def tracker_matches(dut, model: Fine, inputs, total: int, seed: int, cal: 
     assert (corrected > updates // 2) if cal else corrected == 0
 
 
-@pytest.mark.parametrize("cal, quarter, fit, tracker", [(0, 0, 1, 0), (1, 0, 1, 0), (0, 1, 1, 0), (1, 1, 1, 0),
-                                                        (0, 0, 0, 0), (1, 0, 0, 0), (0, 0, 1, 1), (1, 0, 1, 1),
-                                                        (0, 0, 1, 2), (1, 0, 1, 2)])
+async def period_matches(dut, model: Fine, inputs, total: int, seed: int) -> None:
+    """PERIOD = 1: the outputs against the model, clock by clock; prenc_period's
+    divisions (for a step, for a bound), stops and reversals counted."""
+    names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
+             "cal_data")
+    await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
+    vel = model.velocity
+    divisions = bounds = stops = reversals = full = interpolated = 0
+    columns = [inputs[k].tolist() for k in names]
+    for c in range(total):
+        now = dict(zip(names, (col[c] for col in columns)))
+        busy, moved, timed, cw = vel.busy, vel.moved, vel.timed, vel.cw
+        model.clock(now["pos_hyb"], now["pos_valid"], now["step"], now["step_cw"], now["illegal"])
+        started = not busy and vel.busy
+        divisions += int(started and not vel.bounding)
+        bounds += int(started and vel.bounding)
+        full += int(started and not vel.bounding and vel.run == 4)
+        stops += int(moved and timed and not vel.moved and not now["illegal"])
+        reversals += int(now["step"] and moved and now["step_cw"] != cw)
+        interpolated += model.interpolated
+        await clock_and_check(dut, now, expected(model), lambda: f"seed {seed}, clock {c}")
+    dut._log.info("seed %d, PERIOD 1: %d clocks, %d divisions for a step (%d of a full cycle), "
+                  "%d for a bound, %d stops, %d reversals, %d interpolated", seed, total, divisions,
+                  full, bounds, stops, reversals, interpolated)
+    assert divisions > 200 and full > 100 and bounds > 5 and stops >= 2 and reversals >= 2
+    assert interpolated > total // 2
+
+
+@pytest.mark.parametrize("cal, quarter, fit, tracker, period", [
+    (0, 0, 1, 0, 0), (1, 0, 1, 0, 0), (0, 1, 1, 0, 0), (1, 1, 1, 0, 0), (0, 0, 0, 0, 0), (1, 0, 0, 0, 0),
+    (0, 0, 1, 1, 0), (1, 0, 1, 1, 0), (0, 0, 1, 2, 0), (1, 0, 1, 2, 0), (0, 0, 1, 0, 1)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_fine(simulator, cal, quarter, fit, tracker):
+def test_prenc_fine(simulator, cal, quarter, fit, tracker, period):
     parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
                   "WINDOW": WINDOW, "TIMER_BITS": TIMER_BITS, "CAL": cal,
-                  "QUARTER_WINDOWS": quarter, "ACCEL_FIT": fit, "TRACKER": tracker}
+                  "QUARTER_WINDOWS": quarter, "ACCEL_FIT": fit, "TRACKER": tracker, "PERIOD": period}
     env = {}
     if cal:
         parameters["CAL_FILE"] = env["PRENC_CAL_FILE"] = cal_file()
