@@ -404,7 +404,7 @@ def fine_section() -> bool:
     """Section 9: fine position and velocity beside the baselines; the goals of issue 37."""
     from prenc.virtual import fine_bench as fb
 
-    ours = ("ours", "quarter", "mean", "tracker")
+    ours = ("ours", "quarter", "mean", "small", "tracker")
     names = ours + ("period", "mixed", "count")
     print(f"\n9. Fine position and velocity: N = {fb.N}, {fb.CLK_HZ / 1e6:.0f} MHz, FILTER = {fb.FILTER}, "
           f"FINE_BITS = {fb.FINE_BITS}, lookahead {fb.LOOKAHEAD_HALVES / 2} clocks")
@@ -413,14 +413,16 @@ def fine_section() -> bool:
     print(f"   ours: the default, full-cycle windows of at least WINDOW = {fb.WINDOW} clocks (any disc);")
     print(f"   quarter: QUARTER_WINDOWS = 1, windows between any edges of at least {fb.QUARTER_WINDOW} clocks")
     print("   (for a disc whose edges are accurate, or calibrated: section 10); mean: ACCEL_FIT = 0, the")
-    print("   default's windows without the fit, the mean of the last two (for a small FPGA); tracker: a tracking")
+    print("   default's windows without the fit, the mean of the last two; small: PERIOD = 1, the period of the")
+    print("   last sync cycle in integers (prenc_period, the iCEBreaker's: a small FPGA); tracker: a tracking")
     print("   filter whose gains come from a table (`prenc gains`, the disc's: sigma 0.01 quarter ideal, 0.15")
     print("   printed); TRACKER = 1 on the ideal disc, TRACKER = 2 on the printed one (between edges the fine")
     print("   position is the filter's).")
     print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
     print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
     print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")
-    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean / tracker at least as good as")
+    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean / small / tracker at least")
+    print("   as good as")
     print("   every baseline (RMS; equal within 1 % counts), in position (p), velocity (v), both (pv) or neither (-).")
     failed = False
     results: dict[str, dict[str, dict]] = {}
@@ -467,7 +469,8 @@ def fine_section() -> bool:
     for mine, title in (("quarter", "quarter windows (an accurate disc's configuration)"),
                         ("tracker", "TRACKER = 1, the tracking filter (the ideal disc's)"),
                         ("ours", "the default, full-cycle windows"),
-                        ("mean", "ACCEL_FIT = 0, the mean of two windows (a small FPGA's)")):
+                        ("mean", "ACCEL_FIT = 0, the mean of two windows"),
+                        ("small", "PERIOD = 1, the last sync cycle's period (the iCEBreaker's)")):
         # The goals count for the configuration meant for an ideal disc; the default's
         # are shown beside them.
         counts = mine == "quarter"
@@ -506,7 +509,7 @@ def cell_counts(result, family: str) -> str:
 
 def fine_logic_rows() -> list[str]:
     """What the configurations cost: prenc_fine with QUARTER_WINDOWS 0 and 1, with
-    ACCEL_FIT 0 and with TRACKER 1 and 2 (Yosys, iCE40 and ECP5 cells)."""
+    ACCEL_FIT 0, with TRACKER 1 and 2 and with PERIOD 1 (Yosys, iCE40 and ECP5 cells)."""
     sys.path.insert(0, str(REPO / "tb"))
     from yosys import synthesize
 
@@ -519,7 +522,8 @@ def fine_logic_rows() -> list[str]:
         for label, extra in (("QUARTER_WINDOWS = 0", {"QUARTER_WINDOWS": 0}),
                              ("QUARTER_WINDOWS = 1", {"QUARTER_WINDOWS": 1}), ("ACCEL_FIT = 0", {"ACCEL_FIT": 0}),
                              ("TRACKER = 1", {"TRACKER": 1, "GAIN_FILE": str(gains)}),
-                             ("TRACKER = 2", {"TRACKER": 2, "GAIN_FILE": str(gains)})):
+                             ("TRACKER = 2", {"TRACKER": 2, "GAIN_FILE": str(gains)}),
+                             ("PERIOD = 1", {"PERIOD": 1})):
             try:
                 result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, **extra})
                 cells.append(f"{label}: {cell_counts(result, family)}")
@@ -637,9 +641,9 @@ def cal_logic_rows(c_true) -> list[str]:
             rows.append(f"ULX3S board top{', CAL = 1 (the table built in)' if cal else ''}: {_synth_line(synth, r)}")
         except synth.FlowError as err:
             rows.append(f"ULX3S board top{', CAL = 1' if cal else ''}: FAILED: {err}")
-    rows.append("iCEBreaker: no table (it builds the board without the fine position, FINE = 0); "
-                "iCEstick: no fine position and no host link (HOST_LINK = 0); prenc_edge_capture is built on "
-                "every board with the host link")
+    rows.append("iCEBreaker: no table (its fine position takes prenc_period's velocity, PERIOD = 1, and it builds "
+                "no edge capture, EDGE_CAPTURE = 0: the UP5K has no room for either); iCEstick: no fine position "
+                "and no host link (HOST_LINK = 0); prenc_edge_capture is built on the ULX3S")
     return rows
 
 

@@ -298,8 +298,8 @@ def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
     from prenc.cal.table import TableError, read
 
     if not board.cal:
-        raise FlowError(f"the {board.name} board has no calibration table: it builds the board without "
-                        "the fine position (FINE = 0)")
+        raise FlowError(f"the {board.name} board has no calibration table: its fine position takes the "
+                        "velocity of prenc_period (PERIOD = 1), and its FPGA has no room for the table's blocks")
     if cal == "1":
         return {"CAL": 1}
     try:
@@ -317,7 +317,8 @@ def tracker_for(disc: str, bits: int, board: Board, out: Path) -> dict[str, obje
     from prenc.fine import tracker_gains
 
     if not board.cal:
-        raise FlowError(f"the {board.name} board builds no velocity (FINE = 0): --tracker needs the fine blocks")
+        raise FlowError(f"the {board.name} board builds the velocity of prenc_period (PERIOD = 1): its FPGA "
+                        "has no room for prenc_tracker")
     path = out / "gains.hex"
     tracker_gains.write(path, bits, board.clock_mhz * 1e6, tracker_gains.SIGMA[disc])
     return {"TRACKER": 2 if disc == "printed" else 1, "GAIN_FILE": path}

@@ -48,8 +48,8 @@
 // as the map), checked there; N <= 24 fits the map's fields. FINE (1: prenc_fine is
 // built; 0: not, FINE_POS reads POS_HYB and VELOCITY 0), FINE_BITS (0..8, default 8;
 // N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048),
-// QUARTER_WINDOWS (0), ACCEL_FIT (1), TRACKER (0), GAIN_FILE (all in prenc_board's header
-// and docs/fine.md),
+// QUARTER_WINDOWS (0), ACCEL_FIT (1), TRACKER (0), GAIN_FILE, PERIOD (0) (all in
+// prenc_board's header and docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
 // CAL_FILE (the table it starts with; "" : all zero).
 
@@ -79,6 +79,7 @@ module prenc_wb #(
   parameter integer ACCEL_FIT       = 1,
   parameter integer TRACKER         = 0,
   parameter         GAIN_FILE       = "prenc_gains_n10_30mhz.hex",
+  parameter integer PERIOD          = 0,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = ""
 ) (
@@ -135,7 +136,7 @@ module prenc_wb #(
   localparam [4:0] A_CAL_DATA         = 5'h19;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_0A00;  // 0.10.0, the project's VERSION
+  localparam [31:0] VERSION = 32'h0000_0B00;  // 0.11.0, the project's VERSION
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n
@@ -258,6 +259,7 @@ module prenc_wb #(
     .QUARTER_WINDOWS  (QUARTER_WINDOWS),
     .ACCEL_FIT        (ACCEL_FIT),
     .TRACKER          (TRACKER),
+    .PERIOD           (PERIOD),
     .GAIN_FILE        (GAIN_FILE),
     .ENABLE           (FINE),
     .CAL              (CAL),
@@ -375,7 +377,7 @@ module prenc_wb #(
       case (wb_adr_i)
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
-        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 1'b0, (TRACKER == 2), (TRACKER != 0),
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], PERIOD[0], (TRACKER == 2), (TRACKER != 0),
                                          ~ACCEL_FIT[0],
                                          QUARTER_WINDOWS[0], CAL[0], FINE[0], FINE_BITS[3:0],
                                          N[4:0]};

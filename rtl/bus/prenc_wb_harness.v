@@ -5,6 +5,9 @@
 // no register of the map can be optimized away and the timing seen is the bus's own.
 // Used by `scripts/synth.py --core <target> --top prenc_wb_harness`; not for designs.
 //
+// Parameters: N, TAPS, FILTER, ROM_FILE as prenc_wb; FINE (1) and PERIOD (1: prenc_fine's
+// velocity from prenc_period, the one the UP5K holds at 30 MHz; docs/fine.md).
+//
 // Latency: not meaningful; the harness exists for synthesis only (every register of the
 // map kept, the bus's own timing seen).
 
@@ -16,7 +19,9 @@ module prenc_wb_harness #(
   parameter integer N        = 10,
   parameter [31:0]  TAPS     = 32'h0000_0204,
   parameter integer FILTER   = 2,
-  parameter         ROM_FILE = "prenc_rom_n10.hex"
+  parameter         ROM_FILE = "prenc_rom_n10.hex",
+  parameter integer FINE     = 1,
+  parameter integer PERIOD   = 1
 ) (
   input  wire clk,
   input  wire rst,
@@ -47,7 +52,8 @@ module prenc_wb_harness #(
     .TAPS     (TAPS),
     .FILTER   (FILTER),
     .ROM_FILE (ROM_FILE),
-    .FINE     (0)  // the UP5K holds the bus and the core, not prenc_fine (docs/fine.md)
+    .FINE     (FINE),
+    .PERIOD   (PERIOD)   // the UP5K's velocity: prenc_period (docs/fine.md)
   ) u_wb (
     .clk       (clk),
     .rst       (rst),

@@ -168,7 +168,7 @@ def test_synth_rejects_malformed_seeds(argv, capsys):
 
 def test_a_calibration_table_that_does_not_fit_the_build_is_refused(tmp_path):
     """make synth CAL=<file>: the table must be the reader's N and intact; a board built
-    without the fine position has no table at all."""
+    whose FPGA has no room for the table's blocks (the iCEBreaker: PERIOD = 1) has none."""
     from prenc.cal.table import Table
 
     ulx3s, icebreaker = synth.BOARDS["ulx3s"], synth.BOARDS["icebreaker"]
@@ -183,7 +183,7 @@ def test_a_calibration_table_that_does_not_fit_the_build_is_refused(tmp_path):
         synth.cal_for(str(corrupt), 10, ulx3s, tmp_path / "out")
     with pytest.raises(synth.FlowError, match="no such file"):
         synth.cal_for(str(tmp_path / "missing.cal"), 10, ulx3s, tmp_path / "out")
-    with pytest.raises(synth.FlowError, match="without the fine position"):
+    with pytest.raises(synth.FlowError, match="no room for the table"):
         synth.cal_for(str(good), 10, icebreaker, tmp_path / "out")
 
 

@@ -12,13 +12,14 @@ fine blocks see from the core:
   fine blocks alone (the core's promise has its own tests and goals).
 
 Then it runs the models of rtl/fine/ (prenc.fine.velocity, prenc.fine.tracker,
-prenc.fine.fine_position) clock by clock, in four configurations: the default
-(full-cycle windows, WINDOW = 2048, for any disc: "ours"), quarter windows
+prenc.fine.period, prenc.fine.fine_position) clock by clock, in five configurations: the
+default (full-cycle windows, WINDOW = 2048, for any disc: "ours"), quarter windows
 (QUARTER_WINDOWS = 1, WINDOW = 640, for a disc whose edges are accurate or calibrated:
-"quarter"), the small FPGA's (ACCEL_FIT = 0, the default's windows without the fit:
-"mean") and the tracking filter (its gain table for the disc: "tracker"; TRACKER = 1 on
-the ideal disc, TRACKER = 2 on the printed one, its fine position the filter's);
-and three velocity estimators that
+"quarter"), ACCEL_FIT = 0 (the default's windows without the fit: "mean"), the small
+FPGA's (PERIOD = 1, the last sync cycle's period: "small", the iCEBreaker's) and the
+tracking filter (its gain table for the disc: "tracker"; TRACKER = 1 on the ideal disc,
+TRACKER = 2 on the printed one, its fine position the filter's); and three velocity
+estimators that
 users pick instead, each with the same interpolation and extrapolation for its fine
 position:
 
@@ -319,6 +320,7 @@ def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
     ours = run_fine(sync)
     quarter = run_fine(sync, quarter_windows=1)
     mean = run_fine(sync, accel_fit=0)
+    small = run_fine(sync, period=1)
     # the tracker as a user builds it for the disc: the ideal disc's gain table (TRACKER = 1),
     # or the printed disc's and its filtered position (TRACKER = 2)
     tracker = run_fine(sync, gains=tracker_gains.table(N, CLK_HZ, tracker_gains.SIGMA["ideal" if printing is None
@@ -329,6 +331,7 @@ def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
             "ours": score(case, sync, ours["fine"] / scale, ours["velocity"]),
             "quarter": score(case, sync, quarter["fine"] / scale, quarter["velocity"]),
             "mean": score(case, sync, mean["fine"] / scale, mean["velocity"]),
+            "small": score(case, sync, small["fine"] / scale, small["velocity"]),
             "tracker": score(case, sync, tracker["fine"] / scale, tracker["velocity"])}
     for name, velocity in (("period", period_velocity(sync)), ("mixed", sampled_velocity(sync, True)),
                            ("count", sampled_velocity(sync, False))):

@@ -230,6 +230,7 @@ async def registers_after_reset_and_writes(dut):
     assert await regs.PARAMS.mean_only.read() == 1 - int(dut.ACCEL_FIT.value)
     assert await regs.PARAMS.tracker.read() == int(int(dut.TRACKER.value) != 0)
     assert await regs.PARAMS.filtered_position.read() == int(int(dut.TRACKER.value) == 2)
+    assert await regs.PARAMS.period.read() == int(dut.PERIOD.value)
     assert await regs.STATUS.valid.read() == 0 and await regs.STATUS.mode.read() == 0
     for name in ("SNAP_POS_HYB", "SNAP_STATUS", "SNAP_INCREMENTAL", "SNAP_TIME", "SNAP_FINE_POS",
                  "SNAP_VELOCITY", "TRACK_ERRORS"):
@@ -385,7 +386,8 @@ async def interrupts_follow_their_events(dut):
 async def the_snapshot_holds_the_fine_position_and_velocity_of_its_clock(dut):
     """A steady turn (after lock and the velocity's first windows): each snapshot's fine
     position against the true angle at the clock its write was sampled, its velocity
-    against the true speed; the goals of issue 37 (1/256 slot RMS, 0.05 %)."""
+    against the true speed; the goals of issue 37 (1/256 slot RMS, 0.05 %; PERIOD = 1: a clock
+    of the cycle it measures)."""
     n, filter_len, fine_bits = len(dut.pos_hyb) - 2, int(dut.FILTER.value), int(dut.FINE_BITS.value)
     r = rng()
     speed = 0.003 * r.uniform(0.8, 1.2)  # slots per clock
@@ -416,7 +418,10 @@ async def the_snapshot_holds_the_fine_position_and_velocity_of_its_clock(dut):
                   len(errors), rms, max(map(abs, errors)), 100 * max(map(abs, v_errors)))
     assert len(errors) >= 20
     assert rms <= 1 / 256 and max(map(abs, errors)) <= 1 / 64
-    assert max(map(abs, v_errors)) <= 0.0005
+    # PERIOD = 1 (the small FPGA's velocity) measures one sync cycle in whole clocks: within
+    # a clock of it (about 330 clocks a cycle here); the 0.05 % goal is the windowed ones'.
+    cycle = 1 / speed
+    assert max(map(abs, v_errors)) <= (1.0 / cycle if int(dut.PERIOD.value) else 0.0005)
 
 
 @cocotb.test()
@@ -502,13 +507,15 @@ def test_prenc_wb_with_a_calibration_table(simulator):
 
 
 @pytest.mark.parametrize("velocity", [{"QUARTER_WINDOWS": 1, "VELOCITY_WINDOW": 640}, {"ACCEL_FIT": 0},
-                                      {"TRACKER": 1}, {"TRACKER": 2}],
-                         ids=["quarter_windows", "without_the_fit", "tracker", "tracker_filtered_position"])
+                                      {"TRACKER": 1}, {"TRACKER": 2}, {"PERIOD": 1}],
+                         ids=["quarter_windows", "without_the_fit", "tracker", "tracker_filtered_position",
+                              "period"])
 def test_prenc_wb_velocity_configurations(velocity):
     """The other velocity configurations: QUARTER_WINDOWS = 1 (VELOCITY_WINDOW 640, as the
     bench at 30 MHz), ACCEL_FIT = 0 (the mean of two windows, for a small FPGA) and
     TRACKER = 1 (prenc_tracker, its gain table for N = 10 at 30 MHz, an ideal disc), and
-    TRACKER = 2 (the same, the fine position between edges the filter's). PARAMS
+    TRACKER = 2 (the same, the fine position between edges the filter's), and PERIOD = 1
+    (prenc_period, the last sync cycle's period: the small FPGA's). PARAMS
     says which, and at a steady turn the snapshots' fine position and velocity meet the
     same goals."""
     tests = "registers_after_reset_and_writes|the_snapshot_holds_the_fine_position_and_velocity_of_its_clock"
