@@ -421,9 +421,9 @@ def fine_section() -> bool:
     print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
     print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
     print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")
-    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean / small / tracker at least")
-    print("   as good as")
-    print("   every baseline (RMS; equal within 1 % counts), in position (p), velocity (v), both (pv) or neither (-).")
+    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean / small / tracker at")
+    print("   least as good as every baseline (RMS; equal within 1 % counts), in position (p), velocity (v), both (pv)")
+    print("   or neither (-).")
     failed = False
     results: dict[str, dict[str, dict]] = {}
     t0 = time.perf_counter()
