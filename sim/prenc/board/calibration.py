@@ -97,7 +97,8 @@ def collect(answers: Iterable[Answer], bits: int, turns: int, max_seconds: float
     breaks = ", ".join(f"{n} {why}" for why, n in builder.breaks.items() if n) or "none"
     raise HostError(f"no record of {turns} turns within {max_seconds:g} s (the longest was {got:.2f} turns; "
                     f"breaks: {breaks}). Is the disc turning one way, steadily, and slower than the link "
-                    "carries (docs/calibration.md)?")
+                    "carries (docs/calibration.md)? A board built without the edges' capture "
+                    "(EDGE_CAPTURE = 0: the iCEBreaker) never sends a run.")
 
 
 def record_from_board(board: Board, bits: int, turns: int, max_seconds: float = MAX_SECONDS) -> Record:
