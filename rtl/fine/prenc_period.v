@@ -13,10 +13,12 @@
 //   32 fractional bits) starts 2 clocks after the step and takes DIV_CLOCKS = 35; a
 //   step that comes while it runs is taken when it is done (the newest intervals).
 // - The sign is the last step's (the magnitude follows with the division).
-// - Overdue (more clocks since the last step than the interval the velocity came
-//   from): the magnitude is at most 1 / (the clocks since the last step), a division
-//   started again whenever the divider is free; so after a stop it falls as 1 / t.
-//   No step for 2^TIMER_BITS - 1 clocks: a stop, 0 (valid); the next step is an anchor.
+// - Overdue (no step for 1.5 times the interval the velocity came from): the magnitude
+//   is at most 1.5 quarters (a printed disc's widest quarter) over the clocks since the
+//   last step, a division started again whenever the divider is free; so a slowing
+//   disc's velocity falls as 1 / t. No step for 4 times that interval, or for
+//   2^TIMER_BITS - 1 clocks: a stop, 0 (valid). The thresholds are compared a clock
+//   ahead and registered (the UP5K's 30 MHz).
 // - The first step after reset, a stop or an illegal transition is an anchor: the
 //   velocity is valid from the step after. An illegal transition drops it (valid 0).
 // Model: prenc.fine.period.Period, which this equals clock for clock.
@@ -85,7 +87,7 @@ module prenc_period #(
   reg          past_stop_reg;  // since_reg > 4 interval_reg (likewise)
   reg          timeout_reg;    // since_reg == TIMER_MAX (registered beside it)
   reg [QB-1:0] speed_reg;      // the last step's division
-  reg [QB-1:0] bound_reg;      // 1 / (clocks since the last step), once overdue
+  reg [QB-1:0] bound_reg;      // 1.5 / (clocks since the last step), once overdue
   reg          valid_reg;
   reg [QB-1:0] shown_reg;      // min(speed, bound), registered
   reg signed [50:0] velocity_reg;   // with the sign: the output, a clock later

@@ -8,9 +8,11 @@ bench's "period" baseline, in integers).
   1 / (the last interval). The division (32 fractional bits, DIV_CLOCKS = 35) starts
   2 clocks after the step; a step that comes while it runs is taken when it is done.
 - The sign is the last step's (a clock after it: the output is registered).
-- Overdue (more clocks since the last step than the interval the velocity came from):
-  the magnitude is at most 1 / (the clocks since the last step), divided again whenever
-  the divider is free. No step for 2^TIMER_BITS - 1 clocks: a stop, 0 (valid).
+- Overdue (no step for 1.5 times the interval the velocity came from): the magnitude is
+  at most 1.5 quarters (a printed disc's widest quarter) over the clocks since the last
+  step, divided again whenever the divider is free. No step for 4 times that interval,
+  or for 2^TIMER_BITS - 1 clocks: a stop, 0 (valid). The thresholds are compared a
+  clock ahead (registers).
 - The first step after reset, a stop or an illegal transition is an anchor; an illegal
   transition drops the velocity (valid 0).
 
