@@ -98,7 +98,8 @@ module prenc_period #(
   wire          full = (run_reg == 3'd4);
   wire          start_step  = want_reg && !busy_reg;
   wire          overdue     = moved_reg && timed_reg && past_late_reg;
-  wire          start_bound = !want_reg && !busy_reg && !summing_reg && overdue && !step;
+  wire          start_bound = !want_reg && !busy_reg && overdue && !step;   // (never the
+                                                                     // clock after a step)
   wire [NB-1:0] div_num = !start_step ? {3'b001, 1'b1, {(FP - 1){1'b0}}}   // 1.5 (a bound)
                         : full ? {3'b100, {FP{1'b0}}} : {3'b001, {FP{1'b0}}};
   wire [DB-1:0] div_den = !start_step ? {2'b00, since_reg} : full ? period_reg : {2'b00, q0_reg};

@@ -85,7 +85,7 @@ class Period:
         full = run == 4
         start_step = self.want and not busy
         overdue = moved and self.timed and self.past_late
-        start_bound = not self.want and not busy and not self.summing and overdue and not step
+        start_bound = not self.want and not busy and overdue and not step
         stop = moved and (since == self.timer_max or (self.timed and self.past_stop))
         cancel = illegal or stop or (step and busy and bounding)
         if start_step:

@@ -82,6 +82,8 @@ def stimulus(seed: int, cal: int) -> tuple[dict[str, np.ndarray], int]:
             .accelerate(0.0, 1500)             # a stop, longer than the time-out
             .rest((1 << TIMER_BITS) + 500)
             .constant(-0.004, 6000)            # a crawl
+            .rest(600)                         # stopped at once
+            .constant(-0.004, 1000)
             .accelerate(-0.03, 3000))
     theta = traj.theta
     sync = sync_stream(theta, PRINTED if cal else None, n=N)
@@ -218,7 +220,7 @@ async def period_matches(dut, model: Fine, inputs, total: int, seed: int) -> Non
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     vel = model.velocity
-    divisions = bounds = stops = reversals = full = interpolated = 0
+    divisions = bounds = bounded = stops = reversals = full = interpolated = 0
     columns = [inputs[k].tolist() for k in names]
     for c in range(total):
         now = dict(zip(names, (col[c] for col in columns)))
@@ -230,12 +232,13 @@ async def period_matches(dut, model: Fine, inputs, total: int, seed: int) -> Non
         full += int(started and not vel.bounding and vel.run == 4)
         stops += int(moved and timed and not vel.moved and not now["illegal"])
         reversals += int(now["step"] and moved and now["step_cw"] != cw)
+        bounded += int(vel.valid and 0 < vel.bound < vel.speed)   # the bound is shown
         interpolated += model.interpolated
         await clock_and_check(dut, now, expected(model), lambda: f"seed {seed}, clock {c}")
     dut._log.info("seed %d, PERIOD 1: %d clocks, %d divisions for a step (%d of a full cycle), "
-                  "%d for a bound, %d stops, %d reversals, %d interpolated", seed, total, divisions,
-                  full, bounds, stops, reversals, interpolated)
-    assert divisions > 200 and full > 100 and bounds > 5 and stops >= 2 and reversals >= 2
+                  "%d for a bound, %d clocks bounded, %d stops, %d reversals, %d interpolated", seed, total,
+                  divisions, full, bounds, bounded, stops, reversals, interpolated)
+    assert divisions > 200 and full > 100 and bounds > 5 and bounded > 20 and stops >= 2 and reversals >= 2
     assert interpolated > total // 2
 
 
