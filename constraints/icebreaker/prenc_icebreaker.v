@@ -2,8 +2,8 @@
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
 //   12 MHz (pin 35) -> SB_PLL40_PAD -> 30 MHz system clock: 3 Mbaud is 10 clocks per bit,
-//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at 31.4 MHz
-//   (make bench, placer seed 1; seeds 1 to 4: 31.4 to 32.6 MHz).
+//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at 31.8 MHz
+//   (make synth, placer seed 1; seeds 1 to 4: 31.8 to 33.2 MHz).
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
@@ -17,7 +17,7 @@
 // RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity,
 // with prenc_period's velocity (PERIOD = 1, the last sync cycle's period) and without
 // the edges' capture for calibration (EDGE_CAPTURE = 0), so that the board fits the
-// UP5K and meets 30 MHz (3,838 LC of 5,280, 31.4 MHz, make bench); 0: not built (SSI
+// UP5K and meets 30 MHz (3,840 LC of 5,280, 31.8 MHz); 0: not built (SSI
 // and BiSS-C send pos_hyb; the edges' capture is; 3,138 LC).
 
 `resetall
