@@ -36,10 +36,10 @@ class Period:
             raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
         self.timer_bits = timer_bits
         self.timer_max = (1 << timer_bits) - 1
-        self.div = Divider(QUOTIENT_BITS)
         self.reset()
 
     def reset(self) -> None:
+        self.div = Divider(QUOTIENT_BITS)   # its reset
         self.moved = 0
         self.cw = 1
         self.since = 0
@@ -73,12 +73,10 @@ class Period:
 
     def clock(self, step: int, step_cw: int, illegal: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0) -> None:
         """One cycle (c_lo and c_hi: unused, prenc_velocity's calling convention)."""
-        div = self.div
         if rst:
-            div.clock(0, cancel=1)
-            div.done = 0
             self.reset()
             return
+        div = self.div
         # This cycle's wires, from the registers.
         busy, bounding, since = self.busy, self.bounding, self.since
         moved, cw, run, q, period = self.moved, self.cw, self.run, self.q, self.period

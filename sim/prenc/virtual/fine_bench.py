@@ -19,9 +19,8 @@ default (full-cycle windows, WINDOW = 2048, for any disc: "ours"), quarter windo
 FPGA's (PERIOD = 1, the last sync cycle's period: "small", the iCEBreaker's) and the
 tracking filter (its gain table for the disc: "tracker"; TRACKER = 1 on the ideal disc,
 TRACKER = 2 on the printed one, its fine position the filter's); and three velocity
-estimators that
-users pick instead, each with the same interpolation and extrapolation for its fine
-position:
+estimators that users pick instead, each with the same interpolation and extrapolation
+for its fine position:
 
 - period: the time between the last two same-type edges (a full cycle), bounded
   by the time since the last edge (the dVRK firmware's running period);
@@ -120,7 +119,8 @@ def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
     """The model of prenc_fine (prenc_velocity and prenc_fine_position), clock by clock
     (window: default_window(quarter_windows) unless given); with `gains` (a gain table's
     words), prenc_tracker's model instead of prenc_velocity's (TRACKER = 1; with
-    `filtered`, TRACKER = 2: the fine position between edges is the tracker's)."""
+    `filtered`, TRACKER = 2: the fine position between edges is the tracker's); with
+    `period`, prenc_period's (PERIOD = 1)."""
     fine = Fine(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves,
                 window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
                 accel_fit=accel_fit, gains=gains, filtered=filtered, period=period)
