@@ -144,8 +144,8 @@ def cmd_table(args) -> None:
 
     def progress(e) -> None:
         if not args.quiet:
-            sys.stderr.write(f"n={e.n} d={e.d}: {e.length}{'' if e.exact else ' (lower bound)'} "
-                             f"[{e.seconds:.1f} s]\n")
+            status = "" if e.exact else f" (a lower bound: the time limit of {args.time_limit:g} s ran out)"
+            sys.stderr.write(f"n={e.n} d={e.d}: {e.length}{status} [{e.seconds:.1f} s]\n")
 
     table = build_table(args.max_n, args.min_n, time_limit=args.time_limit, progress=progress)
     if args.json:

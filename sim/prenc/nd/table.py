@@ -8,10 +8,12 @@ de Bruijn sequence for d = 1, the best m-sequence otherwise), then the exact sea
 - it ends with the construction's length or a longer one it found, and when it runs
   to the end, or the length meets the upper bound of `bounds`, the entry is proven
   maximal (`exact: true`);
-- when the time limit stops it, the entry is a lower bound (`exact: false`) and the
-  upper bound says how far the truth can be;
-- for the entries that long SAT runs worked on (`records`), a recorded sequence longer
-  than the construction and a recorded bound tighter than `bounds` are taken.
+- when the time limit stops it, the entry is a lower bound (`exact: false`): it says
+  so (the time limit ran out), and the upper bound says how far the truth can be;
+- for the entries that SAT runs settled (`records`), a recorded sequence longer than
+  the construction and a recorded bound tighter than `bounds` are taken. An entry whose
+  recorded bound its sequence meets is proven whatever the time limit, so the table
+  reads the same on a busy machine.
 
 Every sequence is checked by `sequence.min_distance`, an independent pairwise
 computation, before it is put in the table. JSON shape:
@@ -102,7 +104,8 @@ def to_json(table, with_sequence: bool = True) -> dict:
 
 
 def to_markdown(table) -> str:
-    """The table as Markdown: L for proven maxima, >= L (<= U) for lower bounds.
+    """The table as Markdown: L for proven maxima, >= L (<= U) for lower bounds (the
+    exact search's time limit ran out; a line under the table says so).
 
     "by SAT" marks a bound that a recorded SAT run proved (`records`).
     """
@@ -122,4 +125,6 @@ def to_markdown(table) -> str:
                 cell += f" [paper: >= {PAPER_OPEN[(n, d)]}]"
             cells.append(cell)
         lines.append(f"| {n} | " + " | ".join(cells) + " |")
+    if any(not e.exact for row in table.values() for e in row.values()):
+        lines += ["", "`>= L`: the exact search's time limit ran out; L is a lower bound."]
     return "\n".join(lines)
