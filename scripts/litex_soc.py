@@ -207,16 +207,24 @@ def build(board: str, out: Path, run: bool = True):
     return gateware, result
 
 
+def for_yowasp(verilog: str, gateware: Path) -> str:
+    """The SoC's Verilog with every file it reads named by its path in the repository,
+    the only one the YoWASP tools see: the memory files (LiteX names them from the
+    gateware folder) and the reader's ROM (add_prenc names it by its absolute path)."""
+    import synth
+
+    for init in sorted(gateware.glob("*.init")):
+        verilog = verilog.replace(f'$readmemh("{init.name}"', f'$readmemh("{synth.rel(init)}"')
+    return verilog.replace(f'"{REPO}/', '"')
+
+
 def synthesize(board: str, gateware: Path, sources: list[Path]):
     """The bitstream through the project's flow (scripts/synth.py: YoWASP Yosys, nextpnr
     at the design clock, ecppack or icepack), report.md beside it; a missed clock fails."""
     import synth
 
     verilog = gateware / "prenc_litex_soc.v"
-    text = verilog.read_text()
-    for init in sorted(gateware.glob("*.init")):  # memory files by their path in the repository
-        text = text.replace(f'$readmemh("{init.name}"', f'$readmemh("{synth.rel(init)}"')
-    verilog.write_text(text)
+    verilog.write_text(for_yowasp(verilog.read_text(), gateware))
     pins = gateware / ("prenc_litex_soc.lpf" if board == "ulx3s" else "prenc_litex_soc.pcf")
     result = synth.build("prenc_litex_soc", sources, TARGET[board], {}, CLOCK_HZ[board] / 1e6, gateware / "synth",
                          pins=pins)

@@ -165,10 +165,21 @@ def _run(step: str, cmd: list[str], log: Path) -> str:
     return text
 
 
-def literal(value: object) -> str:
-    """A parameter value for Yosys chparam (paths relative to the repository)."""
+def as_path(value: object) -> Path | None:
+    """A parameter value that names a file: a Path, or a string holding an absolute path."""
     if isinstance(value, Path):
-        return f'"{rel(value)}"'
+        return value
+    if isinstance(value, str) and Path(value).is_absolute():
+        return Path(value)
+    return None
+
+
+def literal(value: object) -> str:
+    """A parameter value for Yosys chparam; a file by its name relative to the repository
+    (the YoWASP sandbox sees no other)."""
+    path = as_path(value)
+    if path is not None:
+        return f'"{rel(path)}"'
     if isinstance(value, str):
         return f'"{value}"'
     return str(int(value))
@@ -182,7 +193,8 @@ def synthesize(top: str, sources: list[Path], target_name: str, parameters: dict
     target = TARGETS[target_name]
     out.mkdir(parents=True, exist_ok=True)
     for value in parameters.values():
-        if isinstance(value, Path) and not value.exists():
+        path = as_path(value)
+        if path is not None and not path.exists():
             raise FlowError(f"ROM file {value} not found")
     netlist, stat = out / f"{top}.json", out / "stat.json"
     script = [f"read_verilog -lib -specify +/{target.family}/cells_sim.v"]

@@ -23,6 +23,7 @@ import hashlib
 import os
 import re
 import shutil
+import subprocess
 import sys
 from pathlib import Path
 from typing import Mapping
@@ -33,6 +34,21 @@ REPO = Path(__file__).resolve().parents[1]
 SIM_BUILD = REPO / "sim_build"
 SIMULATORS = ("verilator", "icarus")
 TIMESCALE = ("1ns", "1ps")
+
+
+def repository_files() -> list[str]:
+    """The files a fresh clone has: tracked, and new files that are not ignored."""
+    out = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"],
+                         cwd=REPO, capture_output=True, text=True, check=True).stdout
+    return [name for name in out.splitlines() if (REPO / name).is_file()]
+
+
+def copy_repository(to: Path) -> Path:
+    """A fresh copy of the repository's files (repository_files) in the folder `to`."""
+    for name in repository_files():
+        (to / name).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(REPO / name, to / name)
+    return to
 
 
 def rom_file(n: int, fmt: str = "hex") -> Path:

