@@ -8,12 +8,10 @@
 #                ARGS=cal: section 10 alone)
 #   make lint    verilator --lint-only -Wall on every top's file list
 #   make rom     the default conversion ROM into build/rom/
-#   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200] [CAL=disc.cal|1] [TRACKER=ideal|printed]
+#   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200] [CAL=disc.cal|1]
 #                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/;
 #                CAL: the calibration table built in (a file from prenc calibrate), or
-#                empty (1), for the boards that have one (docs/calibration.md);
-#                TRACKER: the velocity from prenc_tracker, its gain table for an ideal
-#                (or calibrated) or a printed disc (docs/fine.md)
+#                empty (1), for the boards that have one (docs/calibration.md)
 #   make formal  every formal proof of formal/*.sby (SymbiYosys, Yices; also in make test);
 #                the cover traces kept in build/formal/covers/ (index.md)
 #   make mutate  mutants of each proven block, and how many the proofs kill
@@ -102,7 +100,7 @@ lint: $(STAMP)
 	done
 
 synth: $(STAMP)
-	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD)) $(if $(CAL),--cal $(CAL)) $(if $(TRACKER),--tracker $(TRACKER))
+	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD)) $(if $(CAL),--cal $(CAL))
 
 formal: $(STAMP)
 	@$(PY) -m pytest -q -n $(JOBS) tb/formal

@@ -243,13 +243,6 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 rows.append((f"{name} board top", n, _synth_line(synth, r)))
             except synth.FlowError as err:
                 rows.append((f"{name} board top", n, f"FAILED: {err}"))
-    # The ULX3S with prenc_tracker (TRACKER = 2, the printed disc's table).
-    board = synth.BOARDS["ulx3s"]
-    try:
-        r = synth.board_build(board, 10, SIM_BUILD / "bench" / "synth" / "ulx3s-n10-tracker", tracker="printed")
-        rows.append(("ulx3s board top, TRACKER = 2", 10, _synth_line(synth, r)))
-    except synth.FlowError as err:
-        rows.append(("ulx3s board top, TRACKER = 2", 10, f"FAILED: {err}"))
     # The LiteX example: VexRiscv, prenc_wb and the firmware of sw/litex/ (scripts/litex_soc.py).
     for board in ("ulx3s", "icebreaker"):
         what = f"LiteX example SoC (VexRiscv minimal + prenc_wb), {board}"
@@ -401,29 +394,21 @@ def main() -> int:
 
 
 def fine_section() -> bool:
-    """Section 9: fine position and velocity beside the baselines; the goals of issue 37."""
+    """Section 9: fine position and velocity beside the baselines; the goals of issues 37
+    and 58 on the ideal disc (the calibrated disc's are section 10's)."""
     from prenc.virtual import fine_bench as fb
 
-    ours = ("ours", "quarter", "mean", "small", "tracker")
-    names = ours + ("period", "mixed", "count")
+    names = ("ours",) + fb.BASELINES
     print(f"\n9. Fine position and velocity: N = {fb.N}, {fb.CLK_HZ / 1e6:.0f} MHz, FILTER = {fb.FILTER}, "
           f"FINE_BITS = {fb.FINE_BITS}, lookahead {fb.LOOKAHEAD_HALVES / 2} clocks")
     print("   Against the true angle at the clock the output is read. Each cell: position error in slots")
     print("   (RMS / max), velocity error in % of the true speed (reversal, stop: of 600 rpm), RMS / max.")
-    print(f"   ours: the default, full-cycle windows of at least WINDOW = {fb.WINDOW} clocks (any disc);")
-    print(f"   quarter: QUARTER_WINDOWS = 1, windows between any edges of at least {fb.QUARTER_WINDOW} clocks")
-    print("   (for a disc whose edges are accurate, or calibrated: section 10); mean: ACCEL_FIT = 0, the")
-    print("   default's windows without the fit, the mean of the last two; small: PERIOD = 1, the period of the")
-    print("   last sync cycle in integers (prenc_period, the iCEBreaker's: a small FPGA); tracker: a tracking")
-    print("   filter whose gains come from a table (`prenc gains`, the disc's: sigma 0.01 quarter ideal, 0.15")
-    print("   printed); TRACKER = 1 on the ideal disc, TRACKER = 2 on the printed one (between edges the fine")
-    print("   position is the filter's).")
-    print("   period: 1 / (last full cycle), bounded by the time since the last edge (dVRK); mixed: edges over")
-    print(f"   the time between the last edges before two samples (Petrella-Tursini, SimpleFOC); count: edges")
-    print(f"   per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The same interpolation and")
-    print("   extrapolation give every estimator its fine position. best: ours / quarter / mean / small / tracker at")
-    print("   least as good as every baseline (RMS; equal within 1 % counts), in position (p), velocity (v), both (pv)")
-    print("   or neither (-).")
+    print(f"   ours: prenc_fine (prenc_velocity: windows of a quarter, or of WINDOW = {fb.WINDOW} clocks, their")
+    print("   running mean, a fitted acceleration); 0.11: the velocity of 0.11.0's default (full-cycle windows")
+    print("   of 2048 clocks and a fit); period: 1 / (last full cycle), bounded by the time since the last edge")
+    print("   (dVRK); mixed: edges over the time between the last edges before two samples (Petrella-Tursini,")
+    print(f"   SimpleFOC); count: edges per sample; both sampled every {fb.SAMPLE_CLOCKS} clocks (10 kHz). The")
+    print("   baselines' fine position: ours's interpolation and extrapolation with their velocity.")
     failed = False
     results: dict[str, dict[str, dict]] = {}
     t0 = time.perf_counter()
@@ -431,7 +416,7 @@ def fine_section() -> bool:
                                                    "eccentricity 0.2 slot, no calibration table", fb.PRINTED)):
         print(f"\n   {disc}")
         print(f"   {'scenario':<34} {'coarse':>15} " + " ".join(f"{n + ' position':>17} {n + ' velocity %':>17}"
-                                                            for n in names) + "  best")
+                                                            for n in names))
         results[disc] = {}
         for case in fb.cases():
             rows = fb.evaluate(case, printing)
@@ -440,58 +425,51 @@ def fine_section() -> bool:
             for n in names:
                 cells.append(f"{rows[n].fine[0]:.5f}/{rows[n].fine[1]:.4f}")
                 cells.append(f"{rows[n].velocity[0]:.4f}/{rows[n].velocity[1]:.3f}")
-            # At least as good as every baseline (RMS), equal within 1 % counting as good.
-            best = []
-            for mine in ours:
-                good = "".join(letter for letter, k in (("p", "fine"), ("v", "velocity"))
-                               if all(getattr(rows[mine], k)[0] <= 1.01 * getattr(rows[n], k)[0] + 1e-9
-                                      for n in names[len(ours):]))
-                best.append(good or "-")
             line = f"   {case.name:<34} {cells[0]:>15} " + " ".join(f"{c:>17}" for c in cells[1:])
-            line += "  " + " / ".join(best)
             if case.stop_clock is not None:
-                zero = "  0 after " + ", ".join(
+                line += "  0 after " + ", ".join(
                     f"{n} {'never' if rows[n].zero_after == float('inf') else f'{rows[n].zero_after:.2f}'}"
                     for n in names) + " edge periods"
-                line += zero
             print(line)
     print(f"   ({time.perf_counter() - t0:.0f} s)")
+    print("\n   The raw printed disc over whole turns (its eccentricity is once a turn), 600 and 6,000 rpm:")
+    for rpm in (600, 6000):
+        rows = fb.evaluate(fb.whole_turns_case(rpm), fb.PRINTED)
+        print(f"   {rpm} rpm: the quarter alone {rows['coarse'].fine[0]:.4f} slot RMS, ours {rows['ours'].fine[0]:.4f}; "
+              "velocity " + ", ".join(f"{n} {rows[n].velocity[0]:.3f} %" for n in names) + " RMS")
+    print("\n   After a step of speed (at once): clocks until the velocity is within 0.05 % again and stays")
+    print("   (to the end of the run); in brackets, edge periods of the new speed")
+    steps = fb.step_rows()
+    print(f"   {'step':<24} " + " ".join(f"{n:>18}" for n in names))
+    for label, cells in steps:
+        print(f"   {label:<24} " + " ".join(f"{c:>18}" for c in cells))
     print("\n   Logic (Yosys, prenc_fine at N = 10, FINE_BITS = 8, before placement):")
     for line in fine_logic_rows():
         print(f"   {line}")
 
-    def verdict(ok: bool, counts: bool = True) -> str:
+    def verdict(ok: bool) -> str:
         nonlocal failed
-        failed |= counts and not ok
+        failed |= not ok
         return "ok" if ok else "MISSED"
     ideal = results["ideal disc"]
     steady = [f"{r} rpm" for r in fb.STEADY_RPM if r >= 10]
-    for mine, title in (("quarter", "quarter windows (an accurate disc's configuration)"),
-                        ("tracker", "TRACKER = 1, the tracking filter (the ideal disc's)"),
-                        ("ours", "the default, full-cycle windows"),
-                        ("mean", "ACCEL_FIT = 0, the mean of two windows"),
-                        ("small", "PERIOD = 1, the last sync cycle's period (the iCEBreaker's)")):
-        # The goals count for the configuration meant for an ideal disc; the default's
-        # are shown beside them.
-        counts = mine == "quarter"
-        print(f"\n   Goals (ideal disc), {title}:")
-        worst_fine = max(ideal[k][mine].fine[0] for k in steady)
-        worst_vel = max(ideal[k][mine].velocity[1] for k in steady)
-        print(f"   steady 10 to 10,000 rpm: fine position <= 1/256 slot RMS: worst {worst_fine:.5f} "
-              f"(1/{1 / worst_fine:.0f}): {verdict(worst_fine <= 1 / 256, counts)}; velocity within 0.05 %: "
-              f"worst {worst_vel:.4f} % max: {verdict(worst_vel <= 0.05, counts)}")
-        ramp, settled = ideal["ramp 600 -> 6000 rpm in 4 ms"][mine], ideal["  the same, settled"][mine]
-        print(f"   ramp: fine position <= 1/64 slot RMS: {ramp.fine[0]:.5f}: {verdict(ramp.fine[0] <= 1 / 64, counts)}; "
-              f"velocity within 1 % RMS over the whole ramp: {ramp.velocity[0]:.2f} %: "
-              f"{verdict(ramp.velocity[0] <= 1, counts)} ({ramp.velocity[1]:.1f} % max, in the first quarters "
-              f"after the jerk; {settled.velocity[1]:.3f} % max after the first {fb.RAMP_SETTLE_S * 1e6:.0f} us "
-              f"of each change of acceleration)")
-        stop = ideal["stop from 600 rpm in 1 ms"][mine]
-        print(f"   stop: velocity 0 within two edge periods: {stop.zero_after:.2f}: "
-              f"{verdict(stop.zero_after <= 2, counts)}")
-        worst = max(rows[mine].fine[1] for rows in ideal.values())
-        print(f"   never more than a quarter slot (plus the extrapolation) from the truth: worst {worst:.4f} slot: "
-              f"{verdict(worst <= 0.25 + 0.01, counts)}")
+    print("\n   Goals (ideal disc):")
+    worst_fine = max(ideal[k]["ours"].fine[0] for k in steady)
+    worst_vel = max(ideal[k]["ours"].velocity[1] for k in steady)
+    print(f"   steady 10 to 10,000 rpm: fine position <= 1/256 slot RMS: worst {worst_fine:.5f} "
+          f"(1/{1 / worst_fine:.0f}): {verdict(worst_fine <= 1 / 256)}; velocity within 0.05 %: "
+          f"worst {worst_vel:.4f} % max: {verdict(worst_vel <= 0.05)}")
+    ramp, settled = ideal["ramp 600 -> 6000 rpm in 4 ms"]["ours"], ideal["  the same, settled"]["ours"]
+    print(f"   ramp: fine position <= 1/64 slot RMS: {ramp.fine[0]:.5f}: {verdict(ramp.fine[0] <= 1 / 64)}; "
+          f"velocity within 1 % RMS over the whole ramp: {ramp.velocity[0]:.2f} %: "
+          f"{verdict(ramp.velocity[0] <= 1)} ({ramp.velocity[1]:.1f} % max, in the first quarters "
+          f"after the jerk; {settled.velocity[1]:.3f} % max after the first {fb.RAMP_SETTLE_S * 1e6:.0f} us "
+          f"of each change of acceleration)")
+    stop = ideal["stop from 600 rpm in 1 ms"]["ours"]
+    print(f"   stop: velocity 0 within two edge periods: {stop.zero_after:.2f}: {verdict(stop.zero_after <= 2)}")
+    worst = max(rows["ours"].fine[1] for rows in ideal.values())
+    print(f"   never more than a quarter slot (plus the extrapolation) from the truth: worst {worst:.4f} slot: "
+          f"{verdict(worst <= 0.25 + 0.01)}")
     return failed
 
 
@@ -508,24 +486,24 @@ def cell_counts(result, family: str) -> str:
 
 
 def fine_logic_rows() -> list[str]:
-    """What the configurations cost: prenc_fine with QUARTER_WINDOWS 0 and 1, with
-    ACCEL_FIT 0, with TRACKER 1 and 2 and with PERIOD 1 (Yosys, iCE40 and ECP5 cells)."""
+    """What the fine subsystem costs: prenc_fine without and with the calibration table
+    (CAL = 1: its lookup), and its blocks (Yosys, iCE40 and ECP5 cells)."""
     sys.path.insert(0, str(REPO / "tb"))
     from yosys import synthesize
 
-    from runner import gains_file
-
-    gains = gains_file(10, 30e6)
     rows = []
     for family in ("ice40", "ecp5"):
         cells = []
-        for label, extra in (("QUARTER_WINDOWS = 0", {"QUARTER_WINDOWS": 0}),
-                             ("QUARTER_WINDOWS = 1", {"QUARTER_WINDOWS": 1}), ("ACCEL_FIT = 0", {"ACCEL_FIT": 0}),
-                             ("TRACKER = 1", {"TRACKER": 1, "GAIN_FILE": str(gains)}),
-                             ("TRACKER = 2", {"TRACKER": 2, "GAIN_FILE": str(gains)}),
-                             ("PERIOD = 1", {"PERIOD": 1})):
+        for label, top, extra in (("prenc_fine", "prenc_fine", {}),
+                                  ("with CAL = 1", "prenc_fine", {"CAL": 1}),
+                                  ("prenc_velocity", "prenc_velocity", {}),
+                                  ("prenc_fine_position", "prenc_fine_position", {"LOOKAHEAD_HALVES": 25}),
+                                  ("prenc_cal_lookup", "prenc_cal_lookup", {})):
+            base = {"N": 10, "FINE_BITS": 8, "LOOKAHEAD_HALVES": 25} if top == "prenc_fine" else \
+                {"N": 10} if top == "prenc_cal_lookup" else {"N": 10, "FINE_BITS": 8} if top == "prenc_fine_position" \
+                else {}
             try:
-                result = synthesize("prenc_fine", family, {"N": 10, "FINE_BITS": 8, **extra})
+                result = synthesize(top, family, {**base, **extra})
                 cells.append(f"{label}: {cell_counts(result, family)}")
             except RuntimeError as err:
                 cells.append(f"{label}: FAILED: {str(err).splitlines()[0]}")
@@ -563,27 +541,22 @@ def cal_section() -> bool:
     err = cb.table_error(result, c_true)
     print(f"      against the true edges: {err[0]:.5f} slot RMS, {err[1]:.5f} max; its zero is "
           f"{zero:+.5f} slot from the shaft's (taken off the calibrated errors below)")
-    print("\n   c. Applied: position error in slots (RMS / max), velocity error in % (RMS / max)")
-    print("      (calibrated: the default full-cycle windows; quarter: QUARTER_WINDOWS = 1, WINDOW "
-          f"{fb.QUARTER_WINDOW}; tracker: TRACKER = 1, the ideal disc's gain table; TRACKER = 2: the same,")
-    print("      the fine position between edges the filter's (its velocity is TRACKER = 1's); all with the table)")
+    print("\n   c. Applied: position error in slots (RMS / max), velocity error in % (RMS / max): prenc_fine")
+    print("      without the table (CAL = 0) and with it (CAL = 1), beside the baselines (no table)")
+    names = fb.BASELINES
     print(f"   {'scenario':<34} {'coarse':>15} {'uncalibrated pos':>17} {'uncalibrated vel %':>19} "
-          f"{'calibrated pos':>17} {'calibrated vel %':>17} {'quarter pos':>17} {'quarter vel %':>17} "
-          f"{'tracker pos':>17} {'tracker vel %':>17} {'TRACKER = 2 pos':>17}")
+          f"{'calibrated pos':>17} {'calibrated vel %':>17} " + " ".join(f"{n + ' vel %':>15}" for n in names))
     rows = {}
     for case in fb.cases():
         r = cb.evaluate(case, result.table.c, zero)
+        base = fb.evaluate(case, fb.PRINTED)
         rows[case.name] = r
         print(f"   {case.name:<34} {r['coarse'].fine[0]:.4f}/{r['coarse'].fine[1]:.3f} "
               f"{r['uncalibrated'].fine[0]:>9.5f}/{r['uncalibrated'].fine[1]:.4f} "
               f"{r['uncalibrated'].velocity[0]:>10.4f}/{r['uncalibrated'].velocity[1]:.3f} "
               f"{r['calibrated'].fine[0]:>9.5f}/{r['calibrated'].fine[1]:.4f} "
               f"{r['calibrated'].velocity[0]:>9.4f}/{r['calibrated'].velocity[1]:.3f} "
-              f"{r['calibrated quarter'].fine[0]:>9.5f}/{r['calibrated quarter'].fine[1]:.4f} "
-              f"{r['calibrated quarter'].velocity[0]:>9.4f}/{r['calibrated quarter'].velocity[1]:.3f} "
-              f"{r['calibrated tracker'].fine[0]:>9.5f}/{r['calibrated tracker'].fine[1]:.4f} "
-              f"{r['calibrated tracker'].velocity[0]:>9.4f}/{r['calibrated tracker'].velocity[1]:.3f} "
-              f"{r['calibrated tracker 2'].fine[0]:>9.5f}/{r['calibrated tracker 2'].fine[1]:.4f}")
+              + " ".join(f"{base[n].velocity[0]:>8.4f}/{base[n].velocity[1]:.3f}" for n in names))
     print(f"   ({time.perf_counter() - t0:.0f} s)")
 
     def verdict(ok: bool) -> str:
@@ -602,10 +575,16 @@ def cal_section() -> bool:
     print(f"   steady 10 to 10,000 rpm: fine position <= 1/128 slot RMS: worst {worst_pos:.5f}: "
           f"{verdict(worst_pos <= 1 / 128)}; velocity ripple <= 0.1 %: worst {worst_vel:.4f} % max: "
           f"{verdict(worst_vel <= 0.1)}")
-    t_pos = max(rows[k]["calibrated tracker"].fine[0] for k in steady)
-    t_vel = max(rows[k]["calibrated tracker"].velocity[1] for k in steady)
-    print(f"   the same with TRACKER = 1: fine position worst {t_pos:.5f}: {verdict(t_pos <= 1 / 128)}; "
-          f"velocity worst {t_vel:.4f} % max: {verdict(t_vel <= 0.1)}")
+    print(f"   issue 58's, calibrated: fine position <= 1/256 slot RMS: worst {worst_pos:.5f}: "
+          f"{verdict(worst_pos <= 1 / 256)}; velocity within 0.05 %: worst {worst_vel:.4f} % max: "
+          f"{verdict(worst_vel <= 0.05)}")
+    ramp = rows["ramp 600 -> 6000 rpm in 4 ms"]["calibrated"]
+    print(f"   the ramp, calibrated: fine position <= 1/64 slot RMS: {ramp.fine[0]:.5f}: "
+          f"{verdict(ramp.fine[0] <= 1 / 64)}; velocity within 1 % RMS: {ramp.velocity[0]:.2f} %: "
+          f"{verdict(ramp.velocity[0] <= 1)}")
+    stop = rows["stop from 600 rpm in 1 ms"]["calibrated"]
+    print(f"   the stop, calibrated: velocity 0 within two edge periods: {stop.zero_after:.2f}: "
+          f"{verdict(stop.zero_after <= 2)}")
     print(f"   converges in <= 10 turns with +-2 % ripple at {cb.CAL_RIPPLE[1]:.0f} Hz, {cb.CAL_RPM:.0f} rpm: "
           f"{turns} turns: {verdict(turns is not None and turns <= 10)}")
     return failed
@@ -641,9 +620,15 @@ def cal_logic_rows(c_true) -> list[str]:
             rows.append(f"ULX3S board top{', CAL = 1 (the table built in)' if cal else ''}: {_synth_line(synth, r)}")
         except synth.FlowError as err:
             rows.append(f"ULX3S board top{', CAL = 1' if cal else ''}: FAILED: {err}")
-    rows.append("iCEBreaker: no table (its fine position takes prenc_period's velocity, PERIOD = 1, and it builds "
-                "no edge capture, EDGE_CAPTURE = 0: the UP5K has no room for either); iCEstick: no fine position "
-                "and no host link (HOST_LINK = 0); prenc_edge_capture is built on the ULX3S")
+    for cal in (None, "1"):
+        out = SIM_BUILD / "bench" / "synth" / f"icebreaker-n10{'-cal' if cal else ''}"
+        try:
+            r = synth.board_build(synth.BOARDS["icebreaker"], 10, out, cal=cal)
+            rows.append(f"iCEBreaker board top{', CAL = 1 (the table, written over the host link)' if cal else ''}: "
+                        f"{_synth_line(synth, r)}")
+        except synth.FlowError as err:
+            rows.append(f"iCEBreaker board top{', CAL = 1' if cal else ''}: FAILED: {err}")
+    rows.append("iCEstick: no fine position and no host link (HOST_LINK = 0)")
     return rows
 
 

@@ -5,7 +5,7 @@
     python scripts/board_sim.py [--profile constant|reversals|sine] [--rpm 600]
                                 [--misreads 0.01] [--dead-head 2] [--missed-states 3]
                                 [--seconds 0] [--clock-mhz 30 --baud 3000000]
-                                [--fine-bits 0] [--printed] [--cal [--cal-file disc.cal]] [--period]
+                                [--fine-bits 0] [--printed] [--cal [--cal-file disc.cal]]
 
 prenc_board runs on Verilator (tb/board/prenc_board/virtual_board.py), driven by the
 virtual encoder; its UART is a pseudo-terminal whose name this prints. In another
@@ -25,8 +25,7 @@ times closer to real time. Stop it with Ctrl-C, or give --seconds of board time.
 slot, phase 10 degrees, duty 45/55 %, eccentricity 0.2 slot; prenc.virtual.printing).
 --cal builds the board with its calibration table (CAL = 1), empty or from --cal-file;
 then `prenc calibrate --port /dev/pts/N --out disc.cal --apply` calibrates it
-(docs/calibration.md). --period builds the iCEBreaker's fine blocks: the velocity from
-the last sync cycle's period (PERIOD = 1) and no edges' capture (EDGE_CAPTURE = 0).
+(docs/calibration.md).
 """
 
 from __future__ import annotations
@@ -64,8 +63,6 @@ def parse(argv=None) -> argparse.Namespace:
     p.add_argument("--printed", action="store_true", help="a printed disc (the bench's) instead of the ideal one")
     p.add_argument("--cal", action="store_true", help="build the board with its calibration table (CAL = 1)")
     p.add_argument("--cal-file", help="with --cal: the table it starts with (default: all zero)")
-    p.add_argument("--period", action="store_true",
-                   help="the iCEBreaker's build: PERIOD = 1 (the last sync cycle's period), EDGE_CAPTURE = 0")
     args = p.parse_args(argv)
     if args.clock_mhz * 1_000_000 < 4 * args.baud:
         p.error(f"--baud {args.baud} needs at least 4 clocks per bit: --clock-mhz >= {4 * args.baud / 1e6:g}")
@@ -73,8 +70,6 @@ def parse(argv=None) -> argparse.Namespace:
         p.error(f"--misreads {args.misreads} must be in 0..1")
     if args.cal_file and not args.cal:
         p.error("--cal-file needs --cal")
-    if args.period and args.cal:
-        p.error("--period goes without --cal: the iCEBreaker's build has no calibration table")
     if args.rpm == 0:
         p.error("--rpm must not be 0: the reader needs the disc to move to find its position")
     return args
@@ -93,8 +88,6 @@ def main(argv=None) -> int:
                   "CLK_HZ": cfg["clk_hz"], "BAUD": args.baud}
     if args.fine_bits:
         parameters["FINE_BITS"] = args.fine_bits
-    if args.period:
-        parameters |= {"PERIOD": 1, "EDGE_CAPTURE": 0}
     if args.cal:
         parameters["CAL"] = 1
         if args.cal_file:

@@ -126,8 +126,7 @@ def make_soc(board: str, rom_dir: Path, firmware: list[int] | None):
                 platform.add_period_constraint(clk12, 1e9 / 12e6)
 
         soc.crg = _CRG()
-        reader = {"parameters": {"FINE": 0}}  # the UP5K has no room for the CPU and the fine position:
-        # with prenc_fine (PERIOD = 1) the SoC needs 5,654 cells of its 5,280
+        reader = {"parameters": {"FINE": 0}}  # the UP5K has no room for the CPU and the fine position
     else:
         from litex.soc.cores.clock import ECP5PLL
 

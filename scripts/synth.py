@@ -4,7 +4,6 @@
 
     python scripts/synth.py --board icebreaker [--bits 10] [--out build/synth]
     python scripts/synth.py --board ulx3s
-    python scripts/synth.py --board ulx3s --tracker printed   # the velocity from prenc_tracker
     python scripts/synth.py --core ice40-hx8k --bits 16      # the core alone, no bitstream
     python scripts/synth.py --core ice40-up5k --top prenc_core_harness   # few pins: the UP5K
     python scripts/synth.py --core ice40-hx8k --param HYPOTHESES=0       # another parameter
@@ -80,7 +79,7 @@ class Board:
     top: str
     pins: str  # .pcf or .lpf, relative to constraints/<name>/
     clock_mhz: float  # the design clock (after the board's PLL)
-    cal: bool = False  # the top has the fine blocks' parameters (CAL, CAL_FILE, TRACKER, GAIN_FILE)
+    cal: bool = False  # the top has the calibration table's parameters (CAL, CAL_FILE)
 
     @property
     def folder(self) -> Path:
@@ -88,7 +87,7 @@ class Board:
 
 
 BOARDS = {
-    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 30.0),
+    "icebreaker": Board("icebreaker", "ice40-up5k", "prenc_icebreaker", "icebreaker.pcf", 30.0, cal=True),
     "icestick": Board("icestick", "ice40-hx1k", "prenc_icestick", "icestick.pcf", 48.0),
     "ulx3s": Board("ulx3s", "ecp5-85k", "prenc_ulx3s", "ulx3s.lpf", 50.0, cal=True),
 }
@@ -310,8 +309,7 @@ def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
     from prenc.cal.table import TableError, read
 
     if not board.cal:
-        raise FlowError(f"the {board.name} board has no calibration table: its fine position takes the "
-                        "velocity of prenc_period (PERIOD = 1), and its FPGA has no room for the table's blocks")
+        raise FlowError(f"the {board.name} board has no calibration table: its FPGA has no room for it")
     if cal == "1":
         return {"CAL": 1}
     try:
@@ -321,37 +319,20 @@ def cal_for(cal: str, bits: int, board: Board, out: Path) -> dict[str, object]:
     return {"CAL": 1, "CAL_FILE": table.write(out / "calibration.hex")}
 
 
-def tracker_for(disc: str, bits: int, board: Board, out: Path) -> dict[str, object]:
-    """The parameters of a build whose velocity is prenc_tracker's and its gain table for
-    the disc, N and the board's clock, written into `out`: TRACKER = 1 for an ideal disc
-    (or a calibrated one); TRACKER = 2 for a printed one, whose fine position between
-    edges is the filter's (it averages the edges' errors)."""
-    from prenc.fine import tracker_gains
-
-    if not board.cal:
-        raise FlowError(f"the {board.name} board builds the velocity of prenc_period (PERIOD = 1): its FPGA "
-                        "has no room for prenc_tracker")
-    path = out / "gains.hex"
-    tracker_gains.write(path, bits, board.clock_mhz * 1e6, tracker_gains.SIGMA[disc])
-    return {"TRACKER": 2 if disc == "printed" else 1, "GAIN_FILE": path}
-
-
 def board_parameters(board: Board, bits: int, out: Path, baud: int | None = None,
-                     cal: str | None = None, tracker: str | None = None) -> dict[str, object]:
+                     cal: str | None = None) -> dict[str, object]:
     """The board top's parameters for a build (the ROM, and table files, written into `out`)."""
     params: dict[str, object] = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom_for(bits, out)}
     if baud:
         params["BAUD"] = baud
     if cal:
         params.update(cal_for(cal, bits, board, out))
-    if tracker:
-        params.update(tracker_for(tracker, bits, board, out))
     return params
 
 
-def board_build(board: Board, bits: int, out: Path, baud: int | None = None, cal: str | None = None,
-                tracker: str | None = None) -> Result:
-    params = board_parameters(board, bits, out, baud, cal, tracker)
+def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
+                cal: str | None = None) -> Result:
+    params = board_parameters(board, bits, out, baud, cal)
     sources = file_list(board.folder / f"{board.top}.f")
     return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins)
 
@@ -435,10 +416,6 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--cal", metavar="FILE|1",
                         help="with --board: build the calibration table in (CAL = 1): a table file from "
                              "`prenc calibrate` (checked), or 1 for an empty one, written at run time")
-    parser.add_argument("--tracker", choices=("ideal", "printed"),
-                        help="with --board: the velocity from prenc_tracker, its gain table for an ideal "
-                             "(TRACKER = 1) or a printed disc (TRACKER = 2: the fine position the filter's too) "
-                             "at the board's clock")
     parser.add_argument("--freq", type=float, default=100.0, help="target MHz for --core (default 100)")
     parser.add_argument("--top", choices=("prenc_core", "prenc_core_harness", "prenc_wb", "prenc_wb_harness"),
                         default="prenc_core",
@@ -461,8 +438,6 @@ def main(argv: list[str] | None = None) -> int:
         parser.error("--param goes with --core")
     if args.cal and not args.board:
         parser.error("--cal goes with --board")
-    if args.tracker and not args.board:
-        parser.error("--tracker goes with --board")
     if seeds != [1] and not args.core:
         parser.error("--seeds goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
@@ -478,7 +453,7 @@ def main(argv: list[str] | None = None) -> int:
         where = out / f"seed{seed}" if sweep else out
         try:
             if args.board:
-                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal, args.tracker)
+                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal)
             else:
                 result = core_build(args.core, args.bits, args.freq, where, top=args.top, parameters=extra,
                                     seed=seed, require_timing=not sweep)

@@ -62,17 +62,6 @@ def rom_file(n: int, fmt: str = "hex") -> Path:
     return path
 
 
-def gains_file(n: int = 10, clk_hz: float = 30e6, disc: str = "ideal") -> Path:
-    """prenc_tracker's gain table for N bits at clk_hz, written by the same code as
-    `prenc gains` to sim_build/roms/ (fixed path: builds that name it are reused)."""
-    from prenc.fine import tracker_gains
-
-    path = SIM_BUILD / "roms" / f"prenc_gains_n{n}_{int(clk_hz)}hz_{disc}.hex"
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tracker_gains.write(path, n, clk_hz, tracker_gains.SIGMA[disc])
-    return path
-
-
 def matrix_rom_file(n: int, checksum: bool = False) -> Path:
     """The matrix-code table of order n, written by the same code as `prenc matrix rom`
     to sim_build/roms/ (fixed path: builds that name it are reused)."""

@@ -14,11 +14,10 @@
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board. The UP5K's 30 block
-// RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity,
-// with prenc_period's velocity (PERIOD = 1, the last sync cycle's period) and without
-// the edges' capture for calibration (EDGE_CAPTURE = 0), so that the board fits the
-// UP5K and meets 30 MHz (3,840 LC of 5,280, 31.8 MHz); 0: not built (SSI
-// and BiSS-C send pos_hyb; the edges' capture is; 3,138 LC).
+// RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity;
+// 0: not built (SSI and BiSS-C send pos_hyb). CAL (1, with FINE = 1): the calibration
+// table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
+// in from CAL_FILE.
 
 `resetall
 `timescale 1ns / 1ps
@@ -30,7 +29,9 @@ module prenc_icebreaker #(
   parameter integer FILTER   = 2,
   parameter         ROM_FILE = "prenc_rom_n10.hex",
   parameter integer BAUD     = 115200,
-  parameter integer FINE     = 1
+  parameter integer FINE     = 1,
+  parameter integer CAL      = 0,
+  parameter         CAL_FILE = ""
 ) (
   input  wire CLK,
   input  wire BTN_N,
@@ -102,8 +103,9 @@ module prenc_icebreaker #(
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
     .FINE         (FINE),
-    .PERIOD       (FINE),
-    .EDGE_CAPTURE (1 - FINE)
+    .EDGE_CAPTURE (CAL),
+    .CAL          (CAL),
+    .CAL_FILE     (CAL_FILE)
   ) u_board (
     .clk             (clk),
     .rst             (rst),

@@ -16,8 +16,7 @@
 //   LEDs:      led[0] pos_valid, led[1] ACQUIRE, led[2] NORMAL, led[3] REDUCED,
 //              led[4] INCREMENTAL
 //
-// Parameters: N, TAPS, FILTER, ROM_FILE, BAUD, CAL, CAL_FILE, TRACKER, GAIN_FILE as
-// prenc_board (GAIN_FILE for this board's 50 MHz clock: `prenc gains --clock 50e6`).
+// Parameters: N, TAPS, FILTER, ROM_FILE, BAUD, CAL, CAL_FILE as prenc_board.
 
 `resetall
 `timescale 1ns / 1ps
@@ -30,9 +29,7 @@ module prenc_ulx3s #(
   parameter         ROM_FILE = "prenc_rom_n10.hex",
   parameter integer BAUD     = 115200,
   parameter integer CAL      = 0,
-  parameter         CAL_FILE = "",
-  parameter integer TRACKER  = 0,
-  parameter         GAIN_FILE = "prenc_gains_n10_50mhz.hex"
+  parameter         CAL_FILE = ""
 ) (
   input  wire       clk_25mhz,
   input  wire [1:1] btn,
@@ -113,9 +110,7 @@ module prenc_ulx3s #(
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
     .CAL      (CAL),
-    .CAL_FILE (CAL_FILE),
-    .TRACKER  (TRACKER),
-    .GAIN_FILE (GAIN_FILE)
+    .CAL_FILE (CAL_FILE)
   ) u_board (
     .clk             (clk),
     .rst             (rst),

@@ -3,7 +3,7 @@
 // a line `-F <list>` includes another top's list, relative to its own folder.
 -F ../core/prenc_core.f
 -F ../fine/prenc_fine.f
-../cal/prenc_edge_capture.v
+-F ../cal/prenc_edge_capture.f
 -F prenc_host_link.f
 prenc_ssi.v
 prenc_turns.v

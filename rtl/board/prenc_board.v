@@ -10,11 +10,12 @@
 //
 // SSI and BiSS-C send the fine position, N + 2 + FINE_BITS bits, extrapolated to the
 // master's first falling clock edge (EXTRAPOLATE = 1). The pins reach the fine output
-// in 2 + FILTER + 1 + 4 + 3 clocks, half a clock after the edge on average. The frame
-// latches the fine output of the clock that first samples the master's edge (its
-// synchronizer and prenc_turns' register take the two clocks to the latch), half a
-// clock after that edge on average: LOOKAHEAD_HALVES = 2 (10 + FILTER). Both take the
-// fine position from prenc_turns' register, so turns and position are always one pair.
+// in 2 + FILTER + 1 + 4 + 3 clocks (4 more with CAL = 1: prenc_fine's table), half a
+// clock after the edge on average. The frame latches the fine output of the clock that
+// first samples the master's edge (its synchronizer and prenc_turns' register take the
+// two clocks to the latch), half a clock after that edge on average: LOOKAHEAD_HALVES
+// = 2 (10 + FILTER + 4 CAL). Both take the fine position from prenc_turns' register, so
+// turns and position are always one pair.
 //
 // The board tops in constraints/<board>/ add the PLL, the power-on reset and the
 // pin names; this module is what the tests simulate (tb/prenc_board).
@@ -46,22 +47,6 @@
 //                 (default 0: the quarter, as pos_hyb)
 //   EXTRAPOLATE   1: SSI's and BiSS-C's position is extrapolated by the velocity to the
 //                 master's request (default); 0: the position as the pipeline has it
-//   VELOCITY_WINDOW   prenc_velocity's WINDOW, the shortest window in clocks (2048)
-//   QUARTER_WINDOWS   prenc_velocity's: 1, velocity windows between any edges of the
-//                 sync track, for an accurate or calibrated disc (with VELOCITY_WINDOW
-//                 640 at 30 MHz: follows acceleration within a quarter or two); 0: full sync
-//                 cycles, whose A/B phase and duty errors cancel (default, printed discs)
-//   ACCEL_FIT     prenc_velocity's: 1, an acceleration fitted when windows disagree
-//                 (default); 0: the mean of the last two windows, no multiplier (about
-//                 half its logic, for a small FPGA; needs QUARTER_WINDOWS = 0)
-//   TRACKER       prenc_fine's: 1, the velocity from prenc_tracker, a tracking filter
-//                 whose gains come from GAIN_FILE (`prenc gains` for N, the disc's edge
-//                 error and CLK_HZ); 2: the same, and the fine position between edges
-//                 is the filter's (a printed disc without a table); 0: prenc_velocity
-//                 (default)
-//   GAIN_FILE     with TRACKER = 1 or 2: the gain table ($readmemh)
-//   PERIOD        prenc_fine's: 1, the velocity from prenc_period, the period of the sync
-//                 track's last cycle (a small FPGA: the iCEBreaker); 0: not (default)
 //   CAL           1: the fine position and the velocity use the sync track's calibration
 //                 table (docs/calibration.md; needs FINE = 1), written over the host
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
@@ -103,12 +88,6 @@ module prenc_board #(
   parameter integer FINE            = 1,
   parameter integer FINE_BITS       = 0,
   parameter integer EXTRAPOLATE     = 1,
-  parameter integer VELOCITY_WINDOW = 2048,
-  parameter integer QUARTER_WINDOWS = 0,
-  parameter integer ACCEL_FIT       = 1,
-  parameter integer TRACKER         = 0,
-  parameter         GAIN_FILE       = "prenc_gains_n10_30mhz.hex",
-  parameter integer PERIOD          = 0,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
@@ -258,17 +237,18 @@ module prenc_board #(
     .sync_illegal  (sync_illegal)
   );
 
-  // Fine position and velocity (FINE_BITS and VELOCITY_WINDOW are checked there).
+  // Fine position and velocity (FINE_BITS is checked there). The velocity's window:
+  // 34 us, 1024 clocks at 30 MHz.
   localparam integer F         = FINE_BITS;
+  localparam integer WINDOW    = CLK_HZ / 29297;
   localparam integer POS_BITS  = N + 2 + F;
-  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1 && FINE == 1) ? 2 * (10 + FILTER) : 0;
+  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1 && FINE == 1) ? 2 * (10 + FILTER + 4 * CAL)
+                                                                : 0;
   wire [POS_BITS-1:0] fine_pos;
   wire                fine_valid;
   wire                interpolated;
-  wire [50:0]         velocity;
-  wire [49:0]         accel;
+  wire [31:0]         velocity;        // quarters per clock x 2^32, signed
   wire                velocity_valid;
-  wire [31:0]         velocity_word;
   wire [31:0]         fine_word = {{(32 - POS_BITS){1'b0}}, fine_pos};
 
   wire         cal_write;
@@ -279,12 +259,7 @@ module prenc_board #(
     .N                (N),
     .FINE_BITS        (F),
     .LOOKAHEAD_HALVES (LOOKAHEAD),
-    .WINDOW           (VELOCITY_WINDOW),
-    .QUARTER_WINDOWS  (QUARTER_WINDOWS),
-    .ACCEL_FIT        (ACCEL_FIT),
-    .TRACKER          (TRACKER),
-    .GAIN_FILE        (GAIN_FILE),
-    .PERIOD           (PERIOD),
+    .WINDOW           (WINDOW),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)
@@ -303,9 +278,7 @@ module prenc_board #(
     .fine_valid     (fine_valid),
     .interpolated   (interpolated),
     .velocity       (velocity),
-    .accel          (accel),
-    .velocity_valid (velocity_valid),
-    .velocity_word  (velocity_word)
+    .velocity_valid (velocity_valid)
   );
 
   // The host link, and the edges' timing for a calibration run (its EDGES answer).
@@ -380,7 +353,7 @@ module prenc_board #(
         .track2_errors (track2_errors),
         .sync_errors   (sync_errors),
         .fine_pos      (fine_word),
-        .velocity      (velocity_word),
+        .velocity      (velocity),
         .fine_info     ({2'b00, interpolated, velocity_valid, F[3:0]}),
         .edge_run       (edge_run),
         .edge_valid     (edge_valid),
@@ -409,7 +382,7 @@ module prenc_board #(
       wire unused_link = &{1'b0, uart_rx, pos_abs, incremental, track1_pos, track1_valid,
                            track2_pos, track2_valid, track1_errors, track2_errors,
                            sync_errors, fine_word, interpolated, velocity_valid,
-                           velocity_word};
+                           velocity};
     end
   endgenerate
 
@@ -512,7 +485,7 @@ module prenc_board #(
   assign mode            = mode_now;
 
   wire unused_ok = &{1'b0, position, ssi_busy, biss_busy, biss_latch,
-                     turns_placed, turns, slot_held, fine_held, velocity, accel, sync_step,
+                     turns_placed, turns, slot_held, fine_held, velocity, sync_step,
                      sync_illegal};
 
 endmodule

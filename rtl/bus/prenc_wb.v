@@ -27,7 +27,8 @@
 // Fine position and velocity (prenc_fine, docs/fine.md; FINE = 1): FINE_POS is the
 // hybrid position with FINE_BITS more bits, extrapolated (EXTRAPOLATE = 1) so that the
 // snapshot holds the fine position of the clock its write was sampled
-// (LOOKAHEAD_HALVES = 2 (10 + FILTER) - 1; a live read is one clock older). VELOCITY is
+// (LOOKAHEAD_HALVES = 2 (10 + FILTER + 4 CAL) - 1: with CAL = 1 prenc_fine's table takes
+// 4 clocks; a live read is one clock older). VELOCITY is
 // prenc_velocity's in quarters per clock x 2^32, signed, saturating at 32 bits.
 //
 // Calibration table (CAL = 1, docs/calibration.md): a write to CAL_DATA writes its bits
@@ -47,9 +48,8 @@
 // SCORE_LIMIT, CONV_REG, passed to it as they are; the counters are 32-bit and 16-bit,
 // as the map), checked there; N <= 24 fits the map's fields. FINE (1: prenc_fine is
 // built; 0: not, FINE_POS reads POS_HYB and VELOCITY 0), FINE_BITS (0..8, default 8;
-// N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (2048),
-// QUARTER_WINDOWS (0), ACCEL_FIT (1), TRACKER (0), GAIN_FILE, PERIOD (0) (all in
-// prenc_board's header and docs/fine.md),
+// N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (the
+// velocity's window, 34 us in clocks: 1024 at 30 MHz, the default; docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
 // CAL_FILE (the table it starts with; "" : all zero).
 
@@ -74,12 +74,7 @@ module prenc_wb #(
   parameter integer FINE            = 1,
   parameter integer FINE_BITS       = (FINE == 1) ? 8 : 0,
   parameter integer EXTRAPOLATE     = 1,
-  parameter integer VELOCITY_WINDOW = 2048,
-  parameter integer QUARTER_WINDOWS = 0,
-  parameter integer ACCEL_FIT       = 1,
-  parameter integer TRACKER         = 0,
-  parameter         GAIN_FILE       = "prenc_gains_n10_30mhz.hex",
-  parameter integer PERIOD          = 0,
+  parameter integer VELOCITY_WINDOW = 1024,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = ""
 ) (
@@ -136,7 +131,7 @@ module prenc_wb #(
   localparam [4:0] A_CAL_DATA         = 5'h19;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_0B00;  // 0.11.0, the project's VERSION
+  localparam [31:0] VERSION = 32'h0000_0C00;  // 0.12.0, the project's VERSION
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n
@@ -236,14 +231,12 @@ module prenc_wb #(
 
   // Fine position and velocity.
   localparam integer W         = N + 2 + FINE_BITS;
-  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1) ? 2 * (10 + FILTER) - 1 : 0;
+  localparam integer LOOKAHEAD = (EXTRAPOLATE == 1) ? 2 * (10 + FILTER + 4 * CAL) - 1 : 0;
   wire [W-1:0] fine_pos;
   wire         fine_valid;
   wire         interpolated;
-  wire [50:0]  velocity;
-  wire [49:0]  accel;
+  wire [31:0]  velocity;       // quarters per clock x 2^32, signed
   wire         velocity_valid;
-  wire [31:0]  velocity_word;  // quarters per clock x 2^32, saturated
 
   // The calibration table's writes (CAL_DATA), a clock after the bus write.
   reg  [17:0]  cal_addr;
@@ -256,11 +249,6 @@ module prenc_wb #(
     .FINE_BITS        (FINE_BITS),
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (VELOCITY_WINDOW),
-    .QUARTER_WINDOWS  (QUARTER_WINDOWS),
-    .ACCEL_FIT        (ACCEL_FIT),
-    .TRACKER          (TRACKER),
-    .PERIOD           (PERIOD),
-    .GAIN_FILE        (GAIN_FILE),
     .ENABLE           (FINE),
     .CAL              (CAL),
     .CAL_FILE         (CAL_FILE)
@@ -279,9 +267,7 @@ module prenc_wb #(
     .fine_valid     (fine_valid),
     .interpolated   (interpolated),
     .velocity       (velocity),
-    .accel          (accel),
-    .velocity_valid (velocity_valid),
-    .velocity_word  (velocity_word)
+    .velocity_valid (velocity_valid)
   );
 
   wire [7:0] status = {velocity_valid, track2_valid, track1_valid, direction, mode, pos_valid};
@@ -355,7 +341,7 @@ module prenc_wb #(
       snap_incremental <= incremental;
       snap_time        <= timestamp;
       snap_fine_pos    <= fine_pos;
-      snap_velocity    <= velocity_word;
+      snap_velocity    <= velocity;
     end
   end
 
@@ -377,9 +363,7 @@ module prenc_wb #(
       case (wb_adr_i)
         A_ID:               wb_dat_o <= ID;
         A_VERSION:          wb_dat_o <= VERSION;
-        A_PARAMS:           wb_dat_o <= {FILTER[15:0], PERIOD[0], (TRACKER == 2), (TRACKER != 0),
-                                         ~ACCEL_FIT[0],
-                                         QUARTER_WINDOWS[0], CAL[0], FINE[0], FINE_BITS[3:0],
+        A_PARAMS:           wb_dat_o <= {FILTER[15:0], 5'd0, CAL[0], FINE[0], FINE_BITS[3:0],
                                          N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};
         A_STATUS:           wb_dat_o <= {24'd0, status};
@@ -399,7 +383,7 @@ module prenc_wb #(
         A_SNAP_INCREMENTAL: wb_dat_o <= snap_incremental;
         A_SNAP_TIME:        wb_dat_o <= snap_time;
         A_FINE_POS:         wb_dat_o <= fine_word;
-        A_VELOCITY:         wb_dat_o <= velocity_word;
+        A_VELOCITY:         wb_dat_o <= velocity;
         A_SNAP_FINE_POS:    wb_dat_o <= snap_fine_word;
         A_SNAP_VELOCITY:    wb_dat_o <= snap_velocity;
         A_CAL_ADDR:         wb_dat_o <= (CAL == 1) ? {14'd0, cal_addr} : 32'd0;
@@ -410,7 +394,7 @@ module prenc_wb #(
 
   assign wb_err_o = 1'b0;
   wire unused_ok = &{1'b0, wb_sel_i[3:1], wb_dat_i[31:18], sync_step, sync_illegal, fine_valid,
-                     interpolated, accel, velocity};
+                     interpolated};
   assign irq      = |(irq_status & irq_enable);
 
 endmodule

@@ -5,8 +5,7 @@
 // no register of the map can be optimized away and the timing seen is the bus's own.
 // Used by `scripts/synth.py --core <target> --top prenc_wb_harness`; not for designs.
 //
-// Parameters: N, TAPS, FILTER, ROM_FILE as prenc_wb; FINE (1) and PERIOD (1: prenc_fine's
-// velocity from prenc_period, the one the UP5K holds at 30 MHz; docs/fine.md).
+// Parameters: N, TAPS, FILTER, ROM_FILE, FINE (1), CAL (0) as prenc_wb.
 //
 // Latency: not meaningful; the harness exists for synthesis only (every register of the
 // map kept, the bus's own timing seen).
@@ -21,7 +20,7 @@ module prenc_wb_harness #(
   parameter integer FILTER   = 2,
   parameter         ROM_FILE = "prenc_rom_n10.hex",
   parameter integer FINE     = 1,
-  parameter integer PERIOD   = 1
+  parameter integer CAL      = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -53,7 +52,7 @@ module prenc_wb_harness #(
     .FILTER   (FILTER),
     .ROM_FILE (ROM_FILE),
     .FINE     (FINE),
-    .PERIOD   (PERIOD)   // the UP5K's velocity: prenc_period (docs/fine.md)
+    .CAL      (CAL)
   ) u_wb (
     .clk       (clk),
     .rst       (rst),

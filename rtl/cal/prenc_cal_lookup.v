@@ -1,23 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 // prenc_cal_lookup: the calibration table in block RAM, and the corrections of a
-// quarter's two edges, one clock after the quarter is asked for (docs/calibration.md).
+// quarter's two edges (docs/calibration.md).
 //
 // The table (4 x 2^N words: c[x], the true place of edge x is x + c[x] / 2^12
 // quarters) sits in one memory with one read port and one write port, so that every
-// device holds it in plain block RAM. A quarter q needs c[q] and c[q + 1]; two slots
-// hold the last two words read, each with the address it holds (its tag):
-// - each cycle, for the quarter asked, a slot keeps its word, takes the other slot's
-//   (the disc moved one quarter: the shared edge), or is filled by the read; the
-//   memory reads c[q] if the lower slot needs it, else c[q + 1];
-// - so a move of one quarter per clock, either way, keeps both slots full; a jump (the
-//   core's position set anew) takes two clocks; `ok` says both hold q's words;
-// - a write changes a word from the next clock on; a slot that holds its address, or
-//   reads it in the same cycle (the read returns the old word), is emptied.
+// device holds it in plain block RAM. A quarter q needs c[q] and c[q + 1]: when the
+// pair on the outputs (c_lo, c_hi) is not the quarter asked's, the memory reads c[q],
+// then c[q + 1], and the pair and its quarter (pair_quarter) change together on the
+// clock after the second read. Until then they hold the last pair: a consumer uses
+// them when pair_quarter is its quarter. A quarter that changes during a read is read
+// after it. A write to the table empties the pair (`ok` 0) and spoils a read under
+// way, so that a pair never holds a word older than the last write.
 // Model: prenc.cal.lookup.CalLookup.
 //
-// Latency: c_lo and c_hi hold the words of the quarter asked in the cycle before (one
-// clock); a jump to another quarter takes two clocks, and `ok` says when both words are
-// there.
+// Latency: the pair of a quarter asked from clock t on (no read under way) is on the
+// outputs from clock t + 3, and from t + 5 at most if a read was under way.
 //
 // Parameters
 //   N          code word length, 2..16 (the table is 2^(N+2) words of 16 bits)
@@ -27,8 +24,9 @@
 // Ports
 //   quarter        the quarter asked for, N + 2 bits
 //   write, address, data   a word of the table written (two's complement, 2^-12 quarter)
-//   c_lo, c_hi     c[q], c[q + 1] of the quarter asked in the cycle before
-//   ok             both are q's
+//   c_lo, c_hi     c[q], c[q + 1] of q = pair_quarter
+//   pair_quarter   the quarter whose pair c_lo, c_hi are
+//   ok             the pair has been read since reset and the last write
 `resetall
 `timescale 1ns / 1ps
 `default_nettype none
@@ -45,6 +43,7 @@ module prenc_cal_lookup #(
   input  wire [15:0]  data,
   output wire [15:0]  c_lo,
   output wire [15:0]  c_hi,
+  output wire [N+1:0] pair_quarter,
   output wire         ok
 );
 
@@ -71,7 +70,6 @@ module prenc_cal_lookup #(
     end else begin : g_file
       initial $readmemh(CAL_FILE, table_mem);
 `ifndef SYNTHESIS
-      // A missing or short table must not become an all-X or all-zero one.
       prenc_rom_check #(
         .NAME  ("CAL_FILE"),
         .FILE  (CAL_FILE),
@@ -82,56 +80,66 @@ module prenc_cal_lookup #(
     end
   endgenerate
 
-  reg [15:0]   word_reg;      // the memory's read register
-  reg [15:0]   lo_hold_reg;
-  reg [15:0]   hi_hold_reg;
-  reg          lo_word_reg;   // the slot's word is the read's
-  reg          hi_word_reg;
-  reg [QB-1:0] lo_tag_reg;
-  reg [QB-1:0] hi_tag_reg;
-  reg          lo_ok_reg;
-  reg          hi_ok_reg;
+  // The reads: IDLE (a read of the quarter asked starts when the pair is not its own:
+  // c[q] asked of the memory), READ_LO (c[q] comes; c[q + 1] asked), READ_HI (c[q + 1]
+  // comes: the pair is loaded, unless the table was written since the read began).
+  localparam [1:0] IDLE = 2'd0, READ_LO = 2'd1, READ_HI = 2'd2;
 
-  wire [15:0]   lo_val    = lo_word_reg ? word_reg : lo_hold_reg;
-  wire [15:0]   hi_val    = hi_word_reg ? word_reg : hi_hold_reg;
-  wire [QB-1:0] next      = quarter + 1'b1;
-  wire          lo_keep   = lo_ok_reg && (lo_tag_reg == quarter);
-  wire          lo_swap   = !lo_keep && hi_ok_reg && (hi_tag_reg == quarter);
-  wire          hi_keep   = hi_ok_reg && (hi_tag_reg == next);
-  wire          hi_swap   = !hi_keep && lo_ok_reg && (lo_tag_reg == next);
-  wire          read_lo   = !(lo_keep || lo_swap);
-  wire          read_hi   = !(hi_keep || hi_swap) && !read_lo;
-  wire [QB-1:0] read_addr = read_lo ? quarter : next;
+  reg [1:0]    state_reg;
+  reg [QB-1:0] asked_reg;     // the quarter being read
+  reg [15:0]   word_reg;      // the memory's read register
+  reg [15:0]   lo_reg;        // c[q], until its pair is loaded
+  reg          dirty_reg;     // the table was written since the read began
+  reg [15:0]   c_lo_reg;      // the pair
+  reg [15:0]   c_hi_reg;
+  reg [QB-1:0] pair_reg;
+  reg          ok_reg;
+
+  wire          start     = (state_reg == IDLE) && (!ok_reg || quarter != pair_reg);
+  wire [QB-1:0] read_addr = (state_reg == READ_LO) ? asked_reg + 1'b1 : quarter;
 
   always @(posedge clk) begin
     if (write) begin
       table_mem[address] <= data;
     end
-    word_reg <= table_mem[read_addr];
+    word_reg <= table_mem[read_addr];   // the word before this clock's write
   end
 
   always @(posedge clk) begin
-    lo_hold_reg <= lo_swap ? hi_val : lo_val;
-    hi_hold_reg <= hi_swap ? lo_val : hi_val;
-    lo_word_reg <= read_lo;
-    hi_word_reg <= read_hi;
-    lo_tag_reg  <= quarter;
-    hi_tag_reg  <= next;
-    lo_ok_reg   <= !(write && address == quarter);
-    hi_ok_reg   <= (hi_keep || hi_swap || read_hi) && !(write && address == next);
+    case (state_reg)
+      IDLE: if (start) begin
+        asked_reg <= quarter;
+        dirty_reg <= 1'b0;
+        state_reg <= READ_LO;
+      end
+      READ_LO: begin
+        lo_reg    <= word_reg;
+        state_reg <= READ_HI;
+      end
+      default: begin   // READ_HI
+        if (!dirty_reg) begin
+          c_lo_reg <= lo_reg;
+          c_hi_reg <= word_reg;
+          pair_reg <= asked_reg;
+          ok_reg   <= 1'b1;
+        end
+        state_reg <= IDLE;
+      end
+    endcase
+    if (write) begin
+      dirty_reg <= 1'b1;
+      ok_reg    <= 1'b0;
+    end
     if (rst) begin
-      lo_word_reg <= 1'b0;
-      hi_word_reg <= 1'b0;
-      lo_tag_reg  <= {QB{1'b0}};
-      hi_tag_reg  <= {QB{1'b0}};
-      lo_ok_reg   <= 1'b0;
-      hi_ok_reg   <= 1'b0;
+      state_reg <= IDLE;
+      ok_reg    <= 1'b0;
     end
   end
 
-  assign c_lo = lo_val;
-  assign c_hi = hi_val;
-  assign ok   = lo_ok_reg & hi_ok_reg;
+  assign c_lo         = c_lo_reg;
+  assign c_hi         = c_hi_reg;
+  assign pair_quarter = pair_reg;
+  assign ok           = ok_reg;
 
 endmodule
 

@@ -1,42 +1,31 @@
 // SPDX-License-Identifier: Apache-2.0
 // prenc_fine_position: the verified position with the fraction of the quarter passed,
-// extrapolated to the instant a consumer asks.
+// extrapolated to the instant a consumer asks (docs/fine.md).
+// Model: prenc.fine.fine_position.FinePosition, which this equals clock for clock.
 //
-// - travel: the velocity integrated since pos_hyb's last step (FRAC = 48 fractional
-//   bits of a quarter; it stops once it is 2 quarters or more, past any clamp below).
-//   The decoder's step is delayed STEP_DELAY = 3 cycles, so that travel restarts on the
-//   cycle pos_hyb shows the step.
-//   While offset_valid, travel is `offset` instead: a tracking filter's estimate of the
-//   position past the last edge crossed (prenc_tracker's, prenc_fine's TRACKER = 2),
-//   which averages many edges where one edge and the velocity carry that edge's own
-//   error; when it stops (an edge overdue, a stop), travel goes on from there.
+// Fixed point: the velocity and the travel V_FRAC = 32 fractional bits of a quarter
+// (per clock), the fraction and the extrapolation FRAC = 16, the table's corrections
+// CAL_FRAC = 12.
+// - travel: the velocity integrated since pos_hyb's last step (it stops once it is 2
+//   quarters or more, past any clamp below). The decoder's step is delayed STEP_DELAY =
+//   3 cycles, so that travel restarts on the cycle pos_hyb shows the step.
 // - The fraction: the last step crossed the quarter's lower edge (CW) or its upper
-//   edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-48). While pos_valid the fine
-//   position's quarter is pos_hyb's: when the next edge is late, the fraction holds at
-//   the quarter's end.
-// - The extrapolation: + velocity * LOOKAHEAD_HALVES / 2, the clocks from the pins to
-//   this block's output (and half a clock for an edge's unknown place in its clock). It
-//   is the only way the fine position leaves the verified quarter, by at most
-//   |velocity| * LOOKAHEAD_HALVES / 2 quarters. LOOKAHEAD_HALVES = 0 turns it off.
+//   edge (CCW); fraction = clamp(edge + travel) to the quarter, [0, 1), or with CAL = 1
+//   its true span [c_lo, 1 + c_hi). While pos_valid the fine position's quarter is
+//   pos_hyb's: when the next edge is late, the fraction holds at the quarter's end.
+// - The extrapolation: + velocity x LOOKAHEAD_HALVES / 2, the clocks from the pins to
+//   this block's output (and half a clock for an edge's unknown place in its clock),
+//   from the velocity of the clock before, to 2^-16. It is the only way the fine
+//   position leaves the verified quarter, by at most |velocity| x LOOKAHEAD_HALVES / 2
+//   quarters. LOOKAHEAD_HALVES = 0 turns it off.
 // - Without a valid velocity: the fraction is the quarter's middle, nothing is
 //   extrapolated, and `interpolated` is 0.
 // fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
 // h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter.
-// Three register stages, so that no two long carry chains follow each other: (A) the
-// fraction clamped (by its bits: it lies within 9 quarters of 0) with pos_hyb and the
-// flags, (B) plus the extrapolation, (C) the output, OUTPUT_DELAY = 3 clocks after
-// pos_hyb. The extrapolation velocity x LOOKAHEAD_HALVES comes from a registered adder
-// tree of three levels (the velocity of three clocks before).
-// - With CAL = 1 (a calibration table, docs/calibration.md): c_lo and c_hi are the
-//   corrections of pos_hyb's quarter's edges, in 2^-12 quarters, so the quarter really
-//   spans [c_lo, 1 + c_hi): the fraction starts at the crossed edge's true place and is
-//   clamped to that span (and the fine position leaves the verified quarter by at most
-//   the table's largest correction, plus the extrapolation). With CAL = 0 they are
-//   not used.
-// Model: prenc.fine.fine_position.FinePosition.
 //
-// Latency: OUTPUT_DELAY = 3 clocks after pos_hyb, through three register stages; the
-// extrapolation's velocity is that of three clocks before.
+// Latency: OUTPUT_DELAY = 3 clocks after pos_hyb, through three register stages: (A)
+// the fraction clamped, with pos_hyb and the flags; (B) plus the extrapolation; (C) the
+// output. The extrapolation's velocity is that of two clocks before the output's stage B.
 //
 // Parameters
 //   N                 code word length, 2..24 (pos_hyb is N + 2 bits)
@@ -48,11 +37,8 @@
 //   pos_hyb, pos_valid   prenc_core's
 //   step, step_cw        the quadrature decoder's registered step (prenc_core's
 //                        sync_step and direction)
-//   velocity, velocity_valid   prenc_velocity's
+//   velocity, velocity_valid   prenc_velocity's (signed, 2^-32 quarter per clock)
 //   c_lo, c_hi           with CAL = 1: the corrections of pos_hyb's quarter's edges
-//   offset, offset_valid the filter's position past the last edge crossed (signed,
-//                        2^-24 quarter), as of the step this block takes this cycle
-//                        (its step input 3 cycles before); offset_valid 0: unused
 //   fine_pos             N + 2 + F bits: quarters and their fraction
 //   fine_valid           pos_valid, aligned with fine_pos
 //   interpolated         fine_valid, with a valid velocity (else the fraction is fixed)
@@ -72,12 +58,10 @@ module prenc_fine_position #(
   input  wire                   pos_valid,
   input  wire                   step,
   input  wire                   step_cw,
-  input  wire [50:0]            velocity,
+  input  wire [31:0]            velocity,
   input  wire                   velocity_valid,
   input  wire [15:0]            c_lo,
   input  wire [15:0]            c_hi,
-  input  wire [27:0]            offset,
-  input  wire                   offset_valid,
   output wire [N+FINE_BITS+1:0] fine_pos,
   output wire                   fine_valid,
   output wire                   interpolated
@@ -103,101 +87,66 @@ module prenc_fine_position #(
     end
   endgenerate
 
-  localparam integer FRAC = 48;
-  localparam integer F    = FINE_BITS;
-  localparam integer W    = N + 2 + F;
-  localparam integer LB   = FRAC + 4;   // travel
-  localparam integer XB   = FRAC + 12;  // the fraction with the extrapolation
+  // Fixed point and widths.
+  localparam integer V_FRAC     = 32;                // velocity, travel
+  localparam integer FRAC       = 16;                // fraction, extrapolation
+  localparam integer CAL_FRAC   = 12;                // the table's corrections
+  localparam integer F          = FINE_BITS;
+  localparam integer W          = N + 2 + F;
+  localparam integer TB         = V_FRAC + 3;        // travel, signed: below 4 quarters
+  localparam integer XB         = FRAC + 13;         // the fraction with the extrapolation
   localparam integer STEP_DELAY = 3;
 
-  localparam signed [LB:0]   ONE        = {{(LB - FRAC){1'b0}}, 1'b1, {FRAC{1'b0}}};
-  localparam signed [XB-1:0] LOOKAHEAD  = {{(XB - 9){1'b0}}, LOOKAHEAD_HALVES[8:0]};
-  localparam [W-1:0]         MIDDLE     = (F == 0) ? {W{1'b0}}
-                                                   : ({{(W - 1){1'b0}}, 1'b1} << (F - 1));
+  localparam signed [FRAC+4:0] ONE       = 1 << FRAC;
+  localparam signed [9:0]      LOOKAHEAD = LOOKAHEAD_HALVES[9:0];
 
   reg [STEP_DELAY-1:0] step_d_reg;
   reg [STEP_DELAY-1:0] cw_d_reg;
-  reg signed [LB-1:0]  travel_reg;
+  reg signed [TB-1:0]  travel_reg;
   reg                  cw_reg;
-  reg signed [LB:0]    frac_a_reg;       // stage A
-  reg signed [LB:0]    mid_a_reg;        // the quarter's middle
+  reg signed [XB-1:0]  ext_reg;          // velocity x LOOKAHEAD_HALVES, 2^-16
+  reg signed [FRAC+4:0] frac_a_reg;      // stage A
+  reg signed [FRAC+4:0] mid_a_reg;       // the quarter's middle
   reg [N+1:0]          pos_a_reg;
   reg                  valid_a_reg;
   reg                  vv_a_reg;
   reg signed [XB-1:0]  sum_b_reg;        // stage B
+  reg signed [FRAC+4:0] mid_b_reg;
   reg [N+1:0]          pos_b_reg;
   reg                  valid_b_reg;
   reg                  vv_b_reg;
-  reg signed [LB:0]    mid_b_reg;
   reg [W-1:0]          fine_pos_reg;     // stage C
   reg                  valid_reg;
   reg                  interpolated_reg;
-  // velocity x LOOKAHEAD_HALVES: 4, 2, then 1 partial sums (registers, not arrays: Yosys
-  // would read arrays as memories)
-  reg signed [XB-1:0]  tree1_0_reg;
-  reg signed [XB-1:0]  tree1_1_reg;
-  reg signed [XB-1:0]  tree1_2_reg;
-  reg signed [XB-1:0]  tree1_3_reg;
-  reg signed [XB-1:0]  tree2_0_reg;
-  reg signed [XB-1:0]  tree2_1_reg;
-  reg signed [XB-1:0]  tree3_reg;
 
   // Stage A: the fraction of the quarter, from the crossed edge, clamped to the
-  // quarter's span [c_lo, 1 + c_hi) (without CAL: [0, 1)).
-  wire [15:0]          c_lo_used   = (CAL == 1) ? c_lo : 16'd0;
-  wire [15:0]          c_hi_used   = (CAL == 1) ? c_hi : 16'd0;
-  wire signed [LB:0]   lo_edge     = $signed({{(LB + 1 - 16){c_lo_used[15]}}, c_lo_used}) <<<
-                                     (FRAC - 12);
-  wire signed [LB:0]   hi_edge     = ONE + ($signed({{(LB + 1 - 16){c_hi_used[15]}}, c_hi_used})
-                                            <<< (FRAC - 12));
-  wire signed [LB:0]   edge_travel = (cw_reg ? lo_edge : hi_edge) +
-                                     {travel_reg[LB-1], travel_reg};
-  wire signed [LB+1:0] edge_sum    = {lo_edge[LB], lo_edge} + {hi_edge[LB], hi_edge};
-  wire signed [LB:0]   middle_a    = edge_sum[LB+1:1];   // (-8, 9) quarters: it fits
-  reg signed [LB:0]    clamped;
-  generate
-    if (CAL == 1) begin : g_cal_clamp
-      always @(*) begin
-        if (edge_travel < lo_edge) clamped = lo_edge;
-        else if (edge_travel >= hi_edge) clamped = hi_edge - 1'b1;
-        else clamped = edge_travel;
-      end
-    end else begin : g_clamp
-      // By its bits: edge + travel lies within 9 quarters of 0: negative, 1 and above, or in
-      // the quarter.
-      wire above = !edge_travel[LB] && (edge_travel[LB-1:FRAC] != {(LB - FRAC){1'b0}});
-      always @(*) begin
-        clamped = {(LB + 1){1'b0}};
-        clamped[FRAC-1:0] = edge_travel[LB] ? {FRAC{1'b0}} :
-                            above ? {FRAC{1'b1}} : edge_travel[FRAC-1:0];
-      end
-    end
-  endgenerate
-  // The extrapolation's partial products, velocity << i for each bit i of the lookahead.
-  wire signed [XB-1:0] v_wide      = {{(XB - 51){velocity[50]}}, velocity};
-  wire signed [XB-1:0] partial [0:7];
-  genvar g;
-  generate
-    for (g = 0; g < 8; g = g + 1) begin : g_partial
-      assign partial[g] = LOOKAHEAD[g] ? (v_wide <<< g) : {XB{1'b0}};
-    end
-  endgenerate
-  // Stage B: the fraction plus the extrapolation. Stage C: the output.
-  wire signed [XB-1:0] frac_wide   = {{(XB - LB - 1){frac_a_reg[LB]}}, frac_a_reg};
-  wire signed [XB-1:0] truncated   = sum_b_reg >>> (FRAC - F);
-  wire signed [LB:0]   mid_trunc   = mid_b_reg >>> (FRAC - F);
-  wire [W-1:0]         fraction    = vv_b_reg ? truncated[W-1:0] :
-                                     (CAL == 1) ? mid_trunc[W-1:0] : MIDDLE;
-  wire [W-1:0]         base        = {pos_b_reg, {F{1'b0}}};
-  wire signed [LB-1:0] travel_sum  = travel_reg + {{(LB - 51){velocity[50]}}, velocity};
-  // |travel| < 2 quarters, by its bits (the register's, not the sum's: the test beside
-  // the carry chain, not after it; travel stops within a velocity past 2 quarters,
-  // |velocity| < 4, so it stays within LB bits).
-  wire                 travel_in   = (travel_reg[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b0}}) ||
-                                     ((travel_reg[LB-1:FRAC+1] == {(LB - FRAC - 1){1'b1}}) &&
-                                      (travel_reg[FRAC:0] != {(FRAC + 1){1'b0}}));
-  // The quarters above pos_hyb's wrap.
-  wire                 unused_ok   = &{1'b0, truncated[XB-1:W], mid_trunc[LB:W], edge_sum[0]};
+  // quarter's span [lo, hi) (without CAL: [0, 1)), to 2^-16.
+  wire [15:0]           c_lo_used = (CAL == 1) ? c_lo : 16'd0;
+  wire [15:0]           c_hi_used = (CAL == 1) ? c_hi : 16'd0;
+  wire signed [FRAC+4:0] lo   = $signed({c_lo_used[15], c_lo_used, {(FRAC - CAL_FRAC){1'b0}}});
+  wire signed [FRAC+4:0] hi   = ONE +
+                               $signed({c_hi_used[15], c_hi_used, {(FRAC - CAL_FRAC){1'b0}}});
+  wire signed [FRAC+4:0] moved = {{(FRAC + 5 - TB + V_FRAC - FRAC){travel_reg[TB-1]}},
+                                  travel_reg[TB-1:V_FRAC-FRAC]};   // floor, 2^-16
+  wire signed [FRAC+4:0] reach = (cw_reg ? lo : hi) + moved;
+  wire signed [FRAC+4:0] clamped = (reach < lo) ? lo : (reach >= hi) ? hi - 1'b1 : reach;
+  wire signed [FRAC+5:0] span  = {lo[FRAC+4], lo} + {hi[FRAC+4], hi};
+  // Stage B, C.
+  wire signed [XB-1:0]  frac_wide = {{(XB - FRAC - 5){frac_a_reg[FRAC+4]}}, frac_a_reg};
+  wire signed [XB-1:0]  truncated = sum_b_reg >>> (FRAC - F);
+  wire signed [FRAC+4:0] mid_trunc = mid_b_reg >>> (FRAC - F);
+  wire [W-1:0]          fraction  = vv_b_reg ? truncated[W-1:0] : mid_trunc[W-1:0];
+  wire [W-1:0]          base      = {pos_b_reg, {F{1'b0}}};
+  // The travel goes on while |travel| < 2 quarters (the register's bits: the test beside
+  // the carry chain).
+  wire                  travel_in = (travel_reg[TB-1:V_FRAC+1] == {(TB - V_FRAC - 1){1'b0}}) ||
+                                    ((travel_reg[TB-1:V_FRAC+1] == {(TB - V_FRAC - 1){1'b1}}) &&
+                                     (travel_reg[V_FRAC:0] != {(V_FRAC + 1){1'b0}}));
+  // The extrapolation's product, from the velocity to 2^-16.
+  wire signed [XB-1:0]  v_16      = {{(XB - 32 + V_FRAC - FRAC){velocity[31]}},
+                                     velocity[31:V_FRAC-FRAC]};
+  wire                  unused_ok = &{1'b0, truncated[XB-1:W], mid_trunc[FRAC+4:W], span[0],
+                                      velocity[V_FRAC-FRAC-1:0], travel_reg[V_FRAC-FRAC-1:0]};
 
   always @(posedge clk) begin
     // Stage C.
@@ -205,42 +154,34 @@ module prenc_fine_position #(
     valid_reg        <= valid_b_reg;
     interpolated_reg <= valid_b_reg & vv_b_reg;
     // Stage B.
-    sum_b_reg   <= frac_wide + (tree3_reg >>> 1);
+    sum_b_reg   <= frac_wide + (ext_reg >>> 1);
+    mid_b_reg   <= mid_a_reg;
     pos_b_reg   <= pos_a_reg;
     valid_b_reg <= valid_a_reg;
     vv_b_reg    <= vv_a_reg;
-    mid_b_reg   <= mid_a_reg;
     // Stage A.
     frac_a_reg  <= clamped;
-    mid_a_reg   <= middle_a;
+    mid_a_reg   <= span[FRAC+5:1];
     pos_a_reg   <= pos_hyb;
     valid_a_reg <= pos_valid;
     vv_a_reg    <= velocity_valid;
-    // The tree.
-    tree1_0_reg <= partial[0] + partial[1];
-    tree1_1_reg <= partial[2] + partial[3];
-    tree1_2_reg <= partial[4] + partial[5];
-    tree1_3_reg <= partial[6] + partial[7];
-    tree2_0_reg <= tree1_0_reg + tree1_1_reg;
-    tree2_1_reg <= tree1_2_reg + tree1_3_reg;
-    tree3_reg   <= tree2_0_reg + tree2_1_reg;
+    ext_reg     <= v_16 * LOOKAHEAD;
     // The travel since pos_hyb's last step.
-    if (step_d_reg[STEP_DELAY-1]) cw_reg <= cw_d_reg[STEP_DELAY-1];
-    if (offset_valid) begin
-      travel_reg <= {offset, 24'd0};
-    end else if (step_d_reg[STEP_DELAY-1]) begin
-      travel_reg <= {LB{1'b0}};
+    if (step_d_reg[STEP_DELAY-1]) begin
+      cw_reg     <= cw_d_reg[STEP_DELAY-1];
+      travel_reg <= {TB{1'b0}};
     end else if (travel_in) begin
-      travel_reg <= travel_sum;
+      travel_reg <= travel_reg + {{(TB - 32){velocity[31]}}, velocity};
     end
     step_d_reg <= {step_d_reg[STEP_DELAY-2:0], step};
     cw_d_reg   <= {cw_d_reg[STEP_DELAY-2:0], step_cw};
     if (rst) begin
       step_d_reg       <= {STEP_DELAY{1'b0}};
       cw_d_reg         <= {STEP_DELAY{1'b1}};
-      travel_reg       <= {LB{1'b0}};
+      travel_reg       <= {TB{1'b0}};
       cw_reg           <= 1'b1;
-      frac_a_reg       <= {(LB + 1){1'b0}};
+      ext_reg          <= {XB{1'b0}};
+      frac_a_reg       <= {(FRAC + 5){1'b0}};
       mid_a_reg        <= ONE >>> 1;
       mid_b_reg        <= ONE >>> 1;
       pos_a_reg        <= {(N + 2){1'b0}};
@@ -253,13 +194,6 @@ module prenc_fine_position #(
       fine_pos_reg     <= {W{1'b0}};
       valid_reg        <= 1'b0;
       interpolated_reg <= 1'b0;
-      tree1_0_reg      <= {XB{1'b0}};
-      tree1_1_reg      <= {XB{1'b0}};
-      tree1_2_reg      <= {XB{1'b0}};
-      tree1_3_reg      <= {XB{1'b0}};
-      tree2_0_reg      <= {XB{1'b0}};
-      tree2_1_reg      <= {XB{1'b0}};
-      tree3_reg        <= {XB{1'b0}};
     end
   end
 
@@ -269,37 +203,37 @@ module prenc_fine_position #(
   // velocity_valid of OUTPUT_DELAY = 3 clocks before; without a valid velocity the
   // fraction is the quarter's middle; with one, the fine position lies in pos_hyb's
   // quarter, [c_lo, 1 + c_hi) of it with CAL = 1, widened by the extrapolation,
-  // floor(velocity * LOOKAHEAD_HALVES / 2), with the velocity of 5 clocks before.
+  // floor(velocity x LOOKAHEAD_HALVES / 2), with the velocity of 3 clocks before.
   reg [N+1:0]         f_pos_d1, f_pos_d2, f_pos_d3;
   reg [1:0]           f_valid_d1, f_valid_d2, f_valid_d3;  // {velocity_valid, pos_valid}
   reg signed [15:0]   f_lo_d1, f_lo_d2, f_lo_d3;
   reg signed [15:0]   f_hi_d1, f_hi_d2, f_hi_d3;
-  reg signed [50:0]   f_v_d1 = 51'd0, f_v_d2 = 51'd0, f_v_d3 = 51'd0, f_v_d4 = 51'd0,
-                      f_v_d5 = 51'd0;   // 0 before the first clocks, as the tree after reset
+  reg signed [31:0]   f_v_d1 = 32'd0, f_v_d2 = 32'd0, f_v_d3 = 32'd0;   // 0 before the
+                                                                          // first clocks
   reg [2:0]           f_since_rst = 3'd0;
   always @(posedge clk) begin
     {f_pos_d3, f_pos_d2, f_pos_d1}       <= {f_pos_d2, f_pos_d1, pos_hyb};
     {f_valid_d3, f_valid_d2, f_valid_d1} <= {f_valid_d2, f_valid_d1, velocity_valid, pos_valid};
     {f_lo_d3, f_lo_d2, f_lo_d1}          <= {f_lo_d2, f_lo_d1, c_lo_used};
     {f_hi_d3, f_hi_d2, f_hi_d1}          <= {f_hi_d2, f_hi_d1, c_hi_used};
-    {f_v_d5, f_v_d4, f_v_d3, f_v_d2, f_v_d1} <= {f_v_d4, f_v_d3, f_v_d2, f_v_d1, velocity};
+    {f_v_d3, f_v_d2, f_v_d1}             <= {f_v_d2, f_v_d1, velocity};
     f_since_rst <= rst ? 3'd0 : (f_since_rst == 3'd7) ? 3'd7 : f_since_rst + 1'b1;
   end
   initial assume (rst);
-  // The quarter has a width (the calibration table's corrections leave it one); the
-  // velocity is below 1/16 quarter a clock (10,000 rpm at N = 10 and 30 MHz: 1/44), so
-  // that the bound below does not wrap modulo 2^W.
+  // The quarter has a width (the table's corrections leave it one); the velocity is
+  // below 1/16 quarter a clock (10,000 rpm at N = 10 and 30 MHz: 1/44), so that the
+  // bound below does not wrap modulo 2^W.
   always @(*) begin
     assume ($signed(c_hi_used) + 17'sd4096 > $signed(c_lo_used));
-    assume ($signed(velocity) < (51'sd1 <<< (FRAC - 4)) &&
-            $signed(velocity) > -(51'sd1 <<< (FRAC - 4)));
+    assume ($signed(velocity) < (32'sd1 <<< (V_FRAC - 4)) &&
+            $signed(velocity) > -(32'sd1 <<< (V_FRAC - 4)));
   end
   localparam integer F_SHIFT = FRAC - F;
-  localparam integer F_CS    = 12 - F;   // the corrections' 2^-12 in fraction units
+  localparam integer F_CS    = CAL_FRAC - F;   // the corrections in fraction units
   wire [W-1:0]         f_diff  = fine_pos_reg - {f_pos_d3, {F{1'b0}}};
   wire signed [W:0]    f_error = {f_diff[W-1], f_diff};   // in 2^-F quarters
-  wire signed [XB-1:0] f_ext   = ($signed({{(XB - 51){f_v_d5[50]}}, f_v_d5}) *
-                                  $signed({1'b0, LOOKAHEAD})) >>> 1;
+  wire signed [XB-1:0] f_v_16  = $signed(f_v_d3) >>> (V_FRAC - FRAC);   // floor, 2^-16
+  wire signed [XB-1:0] f_ext   = (f_v_16 * $signed({1'b0, LOOKAHEAD})) >>> 1;
   wire signed [XB-1:0] f_ext_q = f_ext >>> F_SHIFT;   // floor, in 2^-F quarters
   wire signed [16:0]   f_lo_q  = $signed({f_lo_d3[15], f_lo_d3}) >>> F_CS;   // floor
   wire signed [16:0]   f_hi_q  = ($signed({f_hi_d3[15], f_hi_d3}) + (17'sd1 <<< F_CS) - 17'sd1)
@@ -313,7 +247,8 @@ module prenc_fine_position #(
     if (f_since_rst >= 3'd3) begin
       assert (valid_reg == f_valid_d3[0]);
       assert (interpolated_reg == (f_valid_d3[0] && f_valid_d3[1]));
-      if (!f_valid_d3[1] && CAL == 0) assert (fine_pos_reg == {f_pos_d3, {F{1'b0}}} + MIDDLE);
+      if (!f_valid_d3[1] && CAL == 0)
+        assert (fine_pos_reg == {f_pos_d3, {F{1'b0}}} + ((1 << F) >> 1));
       assert (f_error >= f_lo && f_error <= f_hi);
       if (CAL == 0 && LOOKAHEAD_HALVES == 0) assert (fine_pos_reg[W-1:F] == f_pos_d3);
     end

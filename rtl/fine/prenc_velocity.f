@@ -1,4 +1,4 @@
 // SPDX-License-Identifier: Apache-2.0
 // Sources of prenc_velocity (verilator -F <this file>), relative to this folder.
--F prenc_divider.f
+prenc_velocity_program.v
 prenc_velocity.v

@@ -3,7 +3,7 @@
 // with the generated register header (sw/prenc_wb.h), counts the lost-position
 // interrupts, and prints every reading on the SoC's UART, one line each:
 //
-//   prenc id 70726e63 version 0.11.0 n 10 fine_bits 8
+//   prenc id 70726e63 version 0.12.0 n 10 fine_bits 8
 //   pos 1234 valid 1 mode 1 fine 315904 vel -12345678 vvalid 1 lost 0 time 123456
 //
 // pos is pos_hyb (4 x slot + quarter), fine the fine position (FINE_BITS more bits), vel

@@ -34,7 +34,7 @@ ENTRY_POINTS = [
     "tb/lint/test_boards.py::test_board_builds_and_meets_timing[icestick]",
     "tb/lint/test_boards.py::test_the_core_keeps_its_clock_floors[ecp5-conv-reg-120MHz]",
     # tb/board/netlist (Yosys's cell models for the netlist's simulation)
-    "tb/board/netlist/test_board_netlist.py::test_board_netlist[icestick-None]",
+    "tb/board/netlist/test_board_netlist.py::test_board_netlist[icestick]",
     # SymbiYosys: tb/formal (the ROM by its name), scripts/mutate.py, scripts/equiv.py
     "tb/formal/test_formal.py::test_proof_passes[prenc_converter]",
     "tb/lint/test_mutate.py::test_a_mutant_runs_every_task_that_asserts_and_no_cover",

@@ -83,9 +83,8 @@ BAD_PARAMETERS = [
     # the core's options, passed through the wrappers to the core's own checks
     ("prenc_wb", "HYPOTHESES", 2), ("prenc_wb", "LOCK_BOTH", 0), ("prenc_board", "CONV_REG", 2),
     ("prenc_board", "DUAL_VOTES", 8),
-    ("prenc_velocity", "ACCEL_FIT", 2), ("prenc_board", "ACCEL_FIT", 2),
-    ("prenc_tracker", "TIMER_BITS", 40), ("prenc_tracker", "CAL", 2), ("prenc_fine", "TRACKER", 3),
-    ("prenc_period", "TIMER_BITS", 11), ("prenc_fine", "PERIOD", 2), ("prenc_board", "EDGE_CAPTURE", 2),
+    ("prenc_velocity", "WINDOW", 16), ("prenc_velocity", "CAL", 2), ("prenc_fine", "WINDOW", 31),
+    ("prenc_board", "EDGE_CAPTURE", 2),
 ]
 
 

@@ -3,8 +3,7 @@
 `check -assert` passes (it fails on multiple drivers, undriven nets and loops).
 
 Tops with a ROM_FILE parameter get a generated ROM of their default N; tops with a
-TABLE_FILE (the matrix-code table, "file" by default) get the n = 3 table; prenc_tracker
-gets its gain table for N = 10 at 30 MHz.
+TABLE_FILE (the matrix-code table, "file" by default) get the n = 3 table.
 """
 
 from __future__ import annotations
@@ -13,7 +12,7 @@ import re
 
 import pytest
 
-from runner import RTL, gains_file, list_file, matrix_rom_file, rom_file
+from runner import RTL, list_file, matrix_rom_file, rom_file
 from yosys import synthesize
 
 TOPS = sorted(p.stem for p in RTL.glob("*/*.f"))
@@ -24,8 +23,6 @@ def parameters_for(top: str) -> dict:
     if re.search(r'parameter\s+\[71:0\]\s+TABLE\s*=\s*"file"', source):
         extra = {"CELL": 3, "TOP": 3} if "PIXEL_BITS" in source else {}
         return {"N": 3, "TABLE_FILE": matrix_rom_file(3), **extra}
-    if "$readmemh(GAIN_FILE" in source:
-        return {"GAIN_FILE": gains_file()}
     if "ROM_FILE" not in source:
         return {}
     n = int(re.search(r"parameter\s+integer\s+N\s*=\s*(\d+)", source).group(1))

@@ -5,8 +5,6 @@
     prenc tracks --bits N [--taps a,b,...] [--shift D] [--format txt|csv] -o FILE
     prenc taps   --bits N [--taps a,b,...]
     prenc demo   [--out DIR]
-    prenc gains  --bits N --clock HZ [--disc ideal|printed | --sigma Q] -o FILE
-                 (prenc_tracker's gain table for a disc and a clock; docs/fine.md)
     prenc host   read|monitor|log|plot ...   (the board over its UART; see prenc.board.host)
     prenc calibrate --port ... --out FILE    (the disc's sync track; prenc.board.calibration)
     prenc nd     search|table|phase|image|rom ...   ((n,d)-sequences; see prenc.nd.cli)
@@ -61,13 +59,6 @@ def cmd_taps(args: argparse.Namespace) -> None:
           f"RTL parameter TAPS = 32'h{taps_mask(taps):08x}")
 
 
-def cmd_gains(args: argparse.Namespace) -> None:
-    from ..fine import tracker_gains
-
-    sigma = tracker_gains.SIGMA[args.disc] if args.sigma is None else args.sigma
-    write_atomically(args.output, lambda: tracker_gains.render(args.bits, args.clock, sigma))
-
-
 def cmd_demo(args: argparse.Namespace) -> None:
     from .demo import run_demo
 
@@ -104,18 +95,6 @@ def build_parser() -> argparse.ArgumentParser:
     taps = sub.add_parser("taps", help="show the default feedback set for N, or check a given one")
     bits(taps, MIN_BITS, MAX_BITS)
     taps.set_defaults(func=cmd_taps)
-
-    gains = sub.add_parser("gains", help="write prenc_tracker's gain table for a disc and a clock")
-    gains.add_argument("--bits", "-n", type=bits_arg, default=10, metavar="N",
-                       help="code word length N, 2..24 (default 10)")
-    gains.add_argument("--clock", type=float, required=True, metavar="HZ",
-                       help="the reader's clock in Hz (the table's speeds are in quarters per clock)")
-    gains.add_argument("--disc", choices=("ideal", "printed"), default="ideal",
-                       help="the disc's edge error: ideal 0.01 quarter RMS, printed 0.15 (default ideal)")
-    gains.add_argument("--sigma", type=float, default=None, metavar="Q",
-                       help="the disc's edge error in quarters RMS, instead of --disc")
-    gains.add_argument("--output", "-o", default="-", metavar="FILE", help="output file, - for stdout (default)")
-    gains.set_defaults(func=cmd_gains)
 
     demo = sub.add_parser("demo", help="generate the default ROM and show the virtual encoder's signals")
     demo.add_argument("--out", default="build/demo", metavar="DIR", help="output folder (default build/demo)")

@@ -1,14 +1,12 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Fine position and velocity beside the core (issue 37): models of rtl/fine/.
+"""Fine position and velocity beside the core: models of rtl/fine/ (docs/fine.md).
 
-    velocity        velocity and acceleration from the sync track's edge timing
-                    (with its serial divider)
-    tracker         the same from a tracking filter whose gains come from a table
-                    (prenc_fine's TRACKER = 1)
-    period          the velocity from the period of the sync track's last cycle, for a
-                    small FPGA (prenc_fine's PERIOD = 1)
-    tracker_gains   that table: the filter's gains by speed and age, for a disc and a
-                    clock (`prenc gains`)
+    velocity        the velocity from windows of the sync track's edges: the registers
+                    around prenc_velocity's engine
+    engine          that engine: an accumulator, a divider's and a multiplier's steps, a
+                    register file in block RAM, run by a program
+    program         the program (the estimator), and the RTL's ROM written from it
     fine_position   the fraction of the quarter passed, from the velocity, and the
                     position extrapolated to the instant a consumer asks
+    fine            prenc_fine: both, and the calibration table between them and the disc
 """

@@ -1,120 +1,70 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Model of rtl/fine/prenc_fine.v: prenc_velocity (or, with TRACKER = 1, prenc_tracker:
-`gains`, its table's words; TRACKER = 2: `filtered` = 1 as well, the tracker's filtered
-position for prenc_fine_position) and prenc_fine_position side by side, and with CAL = 1 the
-calibration table (prenc.cal.lookup, rtl/cal/prenc_cal_lookup.v) between them and the
-disc's true edges.
+"""Model of rtl/fine/prenc_fine.v: prenc_velocity and prenc_fine_position side by side,
+and with CAL = 1 the calibration table (prenc.cal.lookup, rtl/cal/prenc_cal_lookup.v)
+between them and the disc's true edges.
 
-With CAL = 1 (docs/calibration.md):
+With CAL = 1 (docs/calibration.md, docs/fine.md's timing diagram):
 
-- the decoder's quarter q(t) = pos_hyb(t) plus the steps pos_hyb does not show yet
-  (this cycle's and the three before: pos_hyb follows the decoder by 4 clocks) goes to
-  the table, which gives c[q] and c[q + 1] one clock later, registered once more (the
-  block RAM's output is slow);
-- so prenc_velocity takes the decoder's step, direction and illegal transition two
-  clocks late, with those corrections (c_lo, c_hi);
-- prenc_fine_position takes them 2 clocks later again, when pos_hyb shows that quarter;
-- the corrections count only while the table has both words and pos_valid held when
-  the quarter was asked (else 0: the nominal edges).
+- the table is asked for pos_hyb's quarter; its pair (c[q], c[q + 1]) comes
+  READ_DELAY = 3 clocks later and is registered, gated: 0 (the nominal edges) unless
+  the pair is the quarter of pos_hyb 3 clocks before and pos_valid held then;
+- so prenc_fine_position takes pos_hyb, pos_valid and the decoder's step CAL_DELAY = 4
+  clocks late, and prenc_velocity the decoder's step, direction and illegal transition
+  VEL_DELAY = 8 clocks late (pos_hyb follows the decoder by POS_LAG = 4), each with
+  the corrections of its quarter.
 """
 
 from __future__ import annotations
 
-from ..cal.decoder_quarter import DecoderQuarter
-from ..cal.lookup import CalLookup
-from ..cal.table import FRAC as CAL_BITS   # the table's fractional bits
+from ..cal.lookup import READ_DELAY, CalLookup
 from .fine_position import FinePosition
-from .period import Period
-from .tracker import Tracker
-from .velocity import FRAC, Velocity
+from .velocity import Velocity
 
-LATE = 2           # the decoder's step -> prenc_velocity's, with the table (its answer,
-                   # registered)
-OFFSET_DELAY = 2   # the tracker's offset -> prenc_fine_position's (the step it takes is
-                   # STEP_DELAY = 3 clocks old; the tracker's registers, 1)
-POS_DELAY = 2      # the velocity's corrections -> prenc_fine_position's (pos_hyb follows
-                   # the decoder by 4 clocks)
+POS_LAG = 4                        # the decoder's step -> pos_hyb (prenc_core)
+CAL_DELAY = READ_DELAY + 1         # pos_hyb -> its corrections, registered
+VEL_DELAY = POS_LAG + CAL_DELAY    # the decoder's step -> its quarter's corrections
 
 
 class Fine:
     def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
-                 window: int = 2048, timer_bits: int = 26, cal: int = 0, table=None,
-                 quarter_windows: int = 0, accel_fit: int = 1, gains: list[int] | None = None,
-                 filtered: int = 0, period: int = 0):
+                 window: int = 1024, cal: int = 0, table=None):
         if cal not in (0, 1):
             raise ValueError(f"cal = {cal} must be 0 or 1")
-        if filtered not in (0, 1) or (filtered and gains is None):
-            raise ValueError(f"filtered = {filtered} must be 0, or 1 with a gain table")
-        if period not in (0, 1) or (period and (gains is not None or cal)):
-            raise ValueError(f"period = {period} must be 0, or 1 without a gain table and CAL")
-        self.filtered = filtered
         self.cal = cal
-        if period:           # PERIOD = 1: prenc_period
-            self.velocity = Period(timer_bits=timer_bits)
-        elif gains is not None:   # TRACKER = 1 or 2: prenc_tracker with this gain table
-            self.velocity = Tracker(gains, timer_bits=timer_bits, cal_bits=CAL_BITS if cal else 0)
-        else:
-            self.velocity = Velocity(window=window, timer_bits=timer_bits,
-                                     cal_bits=CAL_BITS if cal else 0, quarter_windows=quarter_windows,
-                                     accel_fit=accel_fit)
+        self.velocity = Velocity(window=window, cal=cal)
         self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
         self.lookup = CalLookup(n, table) if cal else None
-        # the tracker's offset on its way to prenc_fine_position: OFFSET_DELAY registers
-        # (OFFSET_DELAY - LATE with CAL = 1)
-        self.offset_d = [(0, 0)] * (OFFSET_DELAY - LATE if cal else OFFSET_DELAY)
-        self.decoder_quarter = DecoderQuarter(n)
         self._reset_pipeline()
 
-    def _offset(self, rst: int) -> None:
-        """The tracker's offset, delayed to meet the step prenc_fine_position takes
-        (OFFSET_DELAY: 2 clocks; 0 with CAL = 1, where the tracker is LATE already)."""
-        if self.offset_d:
-            now = (0, 0) if rst else self._tracker_offset()
-            self.offset_d = [now] + self.offset_d[:-1]
-
-    def _tracker_offset(self) -> tuple[int, int]:
-        vel = self.velocity
-        return (vel.offset, vel.offset_valid) if self.filtered else (0, 0)
-
-    @property
-    def offset_taken(self) -> tuple[int, int]:
-        """The tracker's offset and its flag prenc_fine_position takes this cycle
-        (TRACKER = 2; else (0, 0))."""
-        return self.offset_d[-1] if self.offset_d else self._tracker_offset()
-
     def _reset_pipeline(self) -> None:
-        self.late = [(0, 1, 0, 0)] * LATE             # step, step_cw, illegal, pos_valid, late
-        self.c_reg = (0, 0)                           # the table's answer, gated, registered
-        self.to_fine = [(0, 0)] * POS_DELAY           # corrections on their way
+        self.pos_d = [(0, 0)] * CAL_DELAY              # pos_hyb, pos_valid, late
+        self.step_d = [(0, 1, 0)] * VEL_DELAY          # step, step_cw, illegal, late
+        self.c_reg = (0, 0)                            # the pair, gated, registered
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, illegal: int,
               rst: int = 0, write: int = 0, address: int = 0, data: int = 0) -> None:
         vel, fine = self.velocity, self.fine
-        offset, offset_valid = self.offset_taken
         if not self.cal:
-            fine.clock(pos_hyb, pos_valid, step, step_cw, vel.velocity, vel.valid, rst,
-                       offset=offset, offset_valid=offset_valid)
-            self._offset(rst)
+            fine.clock(pos_hyb, pos_valid, step, step_cw, vel.velocity, vel.valid, rst)
             vel.clock(step, step_cw, illegal, rst)
             return
         look = self.lookup
-        answer = (look.lo, look.hi) if look.ok and self.late[0][3] else (0, 0)
         c_lo, c_hi = self.c_reg
-        shift = FRAC - CAL_BITS
-        f_lo, f_hi = self.to_fine[-1]
-        fine.clock(pos_hyb, pos_valid, step, step_cw, vel.velocity, vel.valid, rst,
-                   c_lo=f_lo << shift, c_hi=f_hi << shift, offset=offset, offset_valid=offset_valid)
-        self._offset(rst)
-        late_step, late_cw, late_illegal, _ = self.late[-1]
-        vel.clock(late_step, late_cw, late_illegal, rst, c_lo=c_lo, c_hi=c_hi)
-        look.clock(self.decoder_quarter.quarter(pos_hyb, step, step_cw), write, address, data, rst)
-        self.decoder_quarter.clock(step, step_cw, rst)
+        f_pos, f_valid = self.pos_d[CAL_DELAY - 1]
+        f_step, f_cw, _ = self.step_d[CAL_DELAY - 1]
+        fine.clock(f_pos, f_valid, f_step, f_cw, vel.velocity, vel.valid, rst, c_lo=c_lo, c_hi=c_hi)
+        v_step, v_cw, v_illegal = self.step_d[VEL_DELAY - 1]
+        vel.clock(v_step, v_cw, v_illegal, rst, c_lo=c_lo, c_hi=c_hi)
+        pos_3, valid_3 = self.pos_d[CAL_DELAY - 2]
+        used = look.ok and look.quarter == pos_3 and valid_3
+        self.c_reg = (look.lo, look.hi) if used and not rst else (0, 0)
+        look.clock(pos_hyb, write, address, data, rst)
         if rst:
-            self._reset_pipeline()
+            self.pos_d = [(0, 0)] * CAL_DELAY
+            self.step_d = [(0, 1, 0)] * VEL_DELAY
             return
-        self.to_fine = [(c_lo, c_hi)] + self.to_fine[:-1]
-        self.c_reg = answer
-        self.late = [(step, step_cw, illegal, pos_valid)] + self.late[:-1]
+        self.pos_d = [(pos_hyb, pos_valid)] + self.pos_d[:-1]
+        self.step_d = [(step, step_cw, illegal)] + self.step_d[:-1]
 
     # What the RTL's outputs show after the clock edge.
     @property

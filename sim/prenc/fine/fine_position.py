@@ -3,54 +3,42 @@
 the quarter passed, extrapolated to the instant a consumer asks.
 
 Inputs each cycle: the core's pos_hyb and pos_valid; the quadrature decoder's
-registered step and step_cw (the block delays them STEP_DELAY cycles, so that the
-step meets pos_hyb, which shows it 4 cycles after the decoder); the velocity and its
-valid flag (prenc_velocity, FRAC fractional bits, quarters per clock).
+registered step and step_cw (delayed STEP_DELAY cycles, so that the step meets pos_hyb,
+which shows it 4 cycles after the decoder); the velocity and its valid flag
+(prenc_velocity: quarters per clock, V_FRAC = 32 fractional bits).
 
-- travel: the velocity integrated since pos_hyb's last step (FRAC bits; it stops
-  once it is 2 quarters or more, past any clamp below); or, while `offset_valid`, `offset`: a tracking filter's estimate of
-  the position past the last edge crossed (prenc_tracker's, TRACKER = 2), which
-  averages many edges where one edge and the velocity carry the edge's own error.
-  When the filter stops tracking (an edge overdue, a stop: its velocity 0), travel
-  goes on from there with the velocity.
+- travel: the velocity integrated since pos_hyb's last step (Q2.32; it stops once it is
+  2 quarters or more, past any clamp below).
 - The fraction of the quarter: the last step crossed the quarter's lower edge (CW) or
-  its upper edge (CCW); fraction = clamp(edge + travel, 0, 1 - 2^-48). So while
-  pos_valid the fine position's quarter is pos_hyb's: when the next edge is late, the
-  fraction holds at the quarter's end.
-- Extrapolation over the pipeline: + velocity * LOOKAHEAD_HALVES / 2 (clocks from the
-  pins to this block's output, and half a clock for the edge's unknown place within
-  its clock). It can take the fine position past the quarter's edge by at most
-  |velocity| * LOOKAHEAD_HALVES / 2 quarters: the only way it leaves the verified
-  quarter. LOOKAHEAD_HALVES = 0 turns it off.
+  its upper edge (CCW); fraction = clamp(edge + travel) to the quarter, [0, 1) or, with
+  a calibration table, its true span [c_lo, 1 + c_hi). So while pos_valid the fine
+  position's quarter is pos_hyb's (the table's span with CAL): when the next edge is
+  late, the fraction holds at the quarter's end. It is kept to FRAC = 16 bits.
+- The extrapolation over the pipeline: + velocity x LOOKAHEAD_HALVES / 2 (the clocks
+  from the pins to this block's output, and half a clock for the edge's unknown place
+  within its clock), from the velocity to 2^-16 (its registered product is the velocity
+  of the clock before). It is the only way the fine position leaves the verified
+  quarter, by at most |velocity| x LOOKAHEAD_HALVES / 2 quarters. LOOKAHEAD_HALVES = 0
+  turns it off.
 - Without a valid velocity: the fraction is the quarter's middle, nothing extrapolated,
   and `interpolated` is 0.
 
-With a calibration table (issue 38), `c_lo` and `c_hi` are the corrections of
-pos_hyb's quarter's edges: the fraction starts at the crossed edge's true place and is
-clamped to the quarter's true span [c_lo, 1 + c_hi), so the fine position leaves the
-verified quarter by at most the table's largest correction (plus the extrapolation).
-They are 0 without a table (CAL = 0).
+fine_pos = floor((pos_hyb + fraction) x 2^F) modulo 2^(N + 2 + F): the datasheet's
+h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter.
 
 Three register stages, so that no two long carry chains follow each other: (A) the
-fraction clamped (by its bits: it lies within 9 quarters of 0), with pos_hyb and the
-flags; (B) the fraction plus the extrapolation; (C) the output. The extrapolation,
-velocity x LOOKAHEAD_HALVES, comes from a registered adder tree of three levels: it
-uses the velocity of three clocks before. The output is OUTPUT_DELAY = 3 clocks after
-pos_hyb.
-
-fine_pos = floor((pos_hyb + fraction) * 2^F) modulo 2^(N + 2 + F): the datasheet's
-h = floor(4 theta) with F more bits, so its top N + 2 bits are the quarter. The outputs
-are registered (one cycle).
+fraction clamped, with pos_hyb and the flags; (B) the fraction plus the extrapolation;
+(C) the output, OUTPUT_DELAY = 3 clocks after pos_hyb.
 """
 
 from __future__ import annotations
 
-from .velocity import FRAC, LEAD_LIMIT
-
-OFFSET_FRAC = 24   # the offset input: 2^-24 quarter
+V_FRAC = 32        # the velocity and travel: 2^-32 quarter (per clock)
+FRAC = 16          # the fraction and the extrapolation: 2^-16 quarter
+CAL_FRAC = 12      # the table's corrections: 2^-12 quarter
 STEP_DELAY = 3     # decoder step -> the cycle before pos_hyb shows it (prenc_position: 4)
 OUTPUT_DELAY = 3   # pos_hyb -> fine_pos
-TREE_DELAY = 3     # velocity -> velocity x LOOKAHEAD_HALVES
+TRAVEL_LIMIT = 2 << V_FRAC   # travel stops once it is 2 quarters
 
 
 class FinePosition:
@@ -70,23 +58,18 @@ class FinePosition:
         self.cw_d = [1] * STEP_DELAY
         self.travel = 0
         self.cw = 1
-        self.tree = [0] * TREE_DELAY                 # velocity x LOOKAHEAD_HALVES, in flight
-        self.a = (0, 0, 0, 0, 1 << (FRAC - 1))       # stage A: fraction, pos_hyb, valid,
-                                                     # velocity_valid, the quarter's middle
-        self.b = (0, 0, 0, 0, 1 << (FRAC - 1))       # stage B: fraction + extrapolation, ...
+        self.ext = 0                          # velocity x LOOKAHEAD_HALVES, 2^-16 (registered)
+        self.a = (0, 0, 0, 0, 1 << (FRAC - 1))   # stage A: fraction, pos_hyb, valid,
+                                                 # velocity_valid, the quarter's middle
+        self.b = (0, 0, 0, 0, 1 << (FRAC - 1))   # stage B: fraction + extrapolation, ...
         self.fine_pos = 0
         self.valid = 0
         self.interpolated = 0
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
-              velocity_valid: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0,
-              offset: int = 0, offset_valid: int = 0) -> None:
+              velocity_valid: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0) -> None:
         """c_lo, c_hi: with a calibration table, the corrections of pos_hyb's quarter's
-        lower and upper edge (FRAC bits): the quarter really spans
-        [pos_hyb + c_lo, pos_hyb + 1 + c_hi).
-        offset, offset_valid: a tracking filter's position past the last edge crossed
-        (2^-OFFSET_FRAC quarter), as of the step this block takes this cycle (its
-        step input STEP_DELAY cycles before): travel takes it while offset_valid."""
+        lower and upper edge (2^-12 quarter): it spans [pos_hyb + c_lo, pos_hyb + 1 + c_hi)."""
         if rst:
             self.reset()
             return
@@ -99,20 +82,18 @@ class FinePosition:
         self.valid, self.interpolated = valid_b, int(valid_b and vv_b)
         # Stage B: the fraction and the extrapolation.
         frac_a, pos_a, valid_a, vv_a, mid_a = self.a
-        self.b = (frac_a + (self.tree[-1] >> 1), pos_a, valid_a, vv_a, mid_a)
-        # Stage A: the fraction clamped to the quarter.
-        top = (1 << FRAC) + c_hi
-        edge = c_lo if self.cw else top
-        frac = max(c_lo, min(top - 1, edge + self.travel))
-        self.a = (frac, pos_hyb, pos_valid, velocity_valid, (c_lo + top) >> 1)
-        self.tree = [velocity * self.lookahead_halves] + self.tree[:-1]
+        self.b = (frac_a + (self.ext >> 1), pos_a, valid_a, vv_a, mid_a)
+        # Stage A: the fraction clamped to the quarter, to 2^-16.
+        lo = c_lo << (FRAC - CAL_FRAC)
+        hi = (1 << FRAC) + (c_hi << (FRAC - CAL_FRAC))
+        edge = lo if self.cw else hi
+        frac = max(lo, min(hi - 1, edge + (self.travel >> (V_FRAC - FRAC))))
+        self.a = (frac, pos_hyb, pos_valid, velocity_valid, (lo + hi) >> 1)
+        self.ext = (velocity >> (V_FRAC - FRAC)) * self.lookahead_halves
         if self.step_d[-1]:
             self.cw = self.cw_d[-1]
-        if offset_valid:
-            self.travel = offset << (FRAC - OFFSET_FRAC)
-        elif self.step_d[-1]:
             self.travel = 0
-        elif abs(self.travel) < LEAD_LIMIT:   # (the test on the register: no long path)
+        elif abs(self.travel) < TRAVEL_LIMIT:   # (the test on the register: no long path)
             self.travel += velocity
         self.step_d = [step] + self.step_d[:-1]
         self.cw_d = [step_cw] + self.cw_d[:-1]

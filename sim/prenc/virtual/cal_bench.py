@@ -9,8 +9,8 @@ position and the velocity, and how many turns it needs.
    max, in slots.
 2. Applied: the scenarios of section 9 on the printed disc, through the models of
    rtl/fine/ without and with the table (prenc.fine.fine.Fine with CAL = 1: the table
-   block prenc.cal.lookup gives prenc_velocity, or prenc_tracker, and
-   prenc_fine_position the corrections of their quarters' edges). The table is the one
+   block prenc.cal.lookup gives prenc_velocity and prenc_fine_position the corrections
+   of their quarters' edges). The table is the one
    a 10-turn run at 70 rpm with a +-2 % ripple at 100 Hz gives. The position error is
    against the true angle less the calibration's zero (the mean of the disc's edge errors, which no
    calibration of one disc can see; a user sets the zero at mounting); the zero is
@@ -22,9 +22,6 @@ from __future__ import annotations
 import numpy as np
 
 from ..cal.calibrate import Result, calibrate
-from ..fine import tracker_gains
-from ..fine.fine import Fine
-from ..fine.velocity import FRAC
 from . import fine_bench as fb
 from .edge_timing import steady_record, true_corrections
 
@@ -65,44 +62,17 @@ def bench_table(c_true: np.ndarray) -> Result:
     return calibrate(record, CAL_TURNS)
 
 
-def run_calibrated(sync: fb.Sync, c: np.ndarray, quarter_windows: int = 0,
-                   gains: list[int] | None = None, filtered: int = 0) -> dict[str, np.ndarray]:
-    """fine_bench.run_fine through prenc_fine with CAL = 1 and the table c (in
-    2^-12 quarters): the model of the RTL, clock by clock, in either configuration, or
-    with `gains` (a gain table's words) with the tracker (TRACKER = 1; with `filtered`,
-    TRACKER = 2: the fine position between edges is the tracker's)."""
-    fine = Fine(n=N, fine_bits=fb.FINE_BITS, lookahead_halves=fb.LOOKAHEAD_HALVES,
-                window=fb.default_window(quarter_windows), cal=1, table=c,
-                quarter_windows=quarter_windows, gains=gains, filtered=filtered)
-    total = len(sync.step)
-    v_out = np.zeros(total)
-    fine_pos = np.zeros(total, dtype=np.int64)
-    step, cw, pos = sync.step.tolist(), sync.cw.tolist(), sync.pos_hyb.tolist()
-    scale = 1.0 / (1 << FRAC)
-    for k in range(total):
-        fine.clock(pos[k], 1, step[k], cw[k], 0)
-        v_out[k] = fine.velocity.velocity * scale
-        fine_pos[k] = fine.fine_pos
-    return {"velocity": v_out, "fine": fine_pos}
-
-
 def evaluate(case: fb.Case, table_c: np.ndarray, zero: float) -> dict[str, fb.Row]:
-    """Ours without and with the table on the printed disc (with the table in four
-    configurations: full-cycle windows, quarter windows, and the tracker with the ideal
-    disc's gain table, the calibrated disc's edges being as good, as TRACKER = 1 and as
-    TRACKER = 2); `zero` (slots) is the
-    calibration's zero against the truth, taken off the calibrated position's error."""
+    """The printed disc without and with the table (prenc_fine with CAL = 1: the table
+    block prenc.cal.lookup gives prenc_velocity and prenc_fine_position the corrections
+    of their quarters' edges), beside the baselines (without the table: they have none);
+    `zero` (slots) is the calibration's zero against the truth, taken off the calibrated
+    position's error."""
     sync = fb.sync_stream(case.theta, fb.PRINTED)
     scale = 1 << fb.FINE_BITS
     plain = fb.run_fine(sync)
-    cal = run_calibrated(sync, table_c)
-    quarter = run_calibrated(sync, table_c, quarter_windows=1)
-    gains = tracker_gains.table(N, fb.CLK_HZ, tracker_gains.SIGMA["ideal"])
-    tracker = run_calibrated(sync, table_c, gains=gains)
-    filtered = run_calibrated(sync, table_c, gains=gains, filtered=1)
-    return {"coarse": fb.score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
+    cal = fb.run_fine(sync, table=table_c)
+    rows = {"coarse": fb.score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "uncalibrated": fb.score(case, sync, plain["fine"] / scale, plain["velocity"]),
-            "calibrated": fb.score(case, sync, cal["fine"] / scale - 4 * zero, cal["velocity"]),
-            "calibrated quarter": fb.score(case, sync, quarter["fine"] / scale - 4 * zero, quarter["velocity"]),
-            "calibrated tracker": fb.score(case, sync, tracker["fine"] / scale - 4 * zero, tracker["velocity"]),
-            "calibrated tracker 2": fb.score(case, sync, filtered["fine"] / scale - 4 * zero, filtered["velocity"])}
+            "calibrated": fb.score(case, sync, cal["fine"] / scale - 4 * zero, cal["velocity"])}
+    return rows

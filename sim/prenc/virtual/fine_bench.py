@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Fine position and velocity against the truth, beside three baselines (issue 37).
+"""Fine position and velocity against the truth, beside baselines (issues 37, 58).
 
 A scenario is a trajectory (the shaft's angle at every clock) and a disc, ideal or
 printed (prenc.virtual.printing). From its sync track this module makes what the
@@ -11,16 +11,11 @@ fine blocks see from the core:
   and pos_valid = 1: the core is taken as locked, so that what is measured is the
   fine blocks alone (the core's promise has its own tests and goals).
 
-Then it runs the models of rtl/fine/ (prenc.fine.velocity, prenc.fine.tracker,
-prenc.fine.period, prenc.fine.fine_position) clock by clock, in five configurations: the
-default (full-cycle windows, WINDOW = 2048, for any disc: "ours"), quarter windows
-(QUARTER_WINDOWS = 1, WINDOW = 640, for a disc whose edges are accurate or calibrated:
-"quarter"), ACCEL_FIT = 0 (the default's windows without the fit: "mean"), the small
-FPGA's (PERIOD = 1, the last sync cycle's period: "small", the iCEBreaker's) and the
-tracking filter (its gain table for the disc: "tracker"; TRACKER = 1 on the ideal disc,
-TRACKER = 2 on the printed one, its fine position the filter's); and three velocity
-estimators that users pick instead, each with the same interpolation and extrapolation
-for its fine position:
+Then it runs the model of rtl/fine/ (prenc.fine.fine.Fine: prenc_velocity and
+prenc_fine_position) clock by clock ("ours"), beside the velocity of 0.11.0's default
+("0.11", prenc.virtual.previous_velocity) and three velocity estimators that users pick
+instead, each of these with the same interpolation and extrapolation for its fine
+position:
 
 - period: the time between the last two same-type edges (a full cycle), bounded
   by the time since the last edge (the dVRK firmware's running period);
@@ -42,10 +37,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..fine import tracker_gains
-from ..fine.fine import Fine
+from ..fine.fine import CAL_DELAY, Fine
 from ..fine.fine_position import OUTPUT_DELAY, STEP_DELAY
-from ..fine.velocity import FRAC
+from ..fine.velocity import V_FRAC
 from .encoder import Disc
 from .printing import Printing
 from .trajectory import Trajectory
@@ -54,9 +48,7 @@ CLK_HZ = 30e6
 N = 10
 FILTER = 2
 FINE_BITS = 8
-WINDOW = 2048
-QUARTER_WINDOW = 640          # the shortest window with QUARTER_WINDOWS = 1 (21 us; below a
-                              # quarter at 600 rpm, where the ramp starts)
+WINDOW = 1024                 # prenc_velocity's at 30 MHz (34 us)
 SAMPLE_CLOCKS = 3000          # the baselines' sampling period: 100 us at 30 MHz (10 kHz)
 DECODER_DELAY = 2 + FILTER + 1  # pins -> the decoder's registered step
 POSITION_DELAY = 4              # decoder -> pos_hyb
@@ -107,23 +99,15 @@ def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N) -> Syn
     return Sync(step, cw, pos % (4 << n))
 
 
-def default_window(quarter_windows: int) -> int:
-    """The bench's shortest window for a configuration: WINDOW, or QUARTER_WINDOW."""
-    return QUARTER_WINDOW if quarter_windows else WINDOW
-
-
-def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
-             lookahead_halves: int = LOOKAHEAD_HALVES, n: int = N,
-             quarter_windows: int = 0, accel_fit: int = 1,
-             gains: list[int] | None = None, filtered: int = 0, period: int = 0) -> dict[str, np.ndarray]:
-    """The model of prenc_fine (prenc_velocity and prenc_fine_position), clock by clock
-    (window: default_window(quarter_windows) unless given); with `gains` (a gain table's
-    words), prenc_tracker's model instead of prenc_velocity's (TRACKER = 1; with
-    `filtered`, TRACKER = 2: the fine position between edges is the tracker's); with
-    `period`, prenc_period's (PERIOD = 1)."""
-    fine = Fine(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves,
-                window=window or default_window(quarter_windows), quarter_windows=quarter_windows,
-                accel_fit=accel_fit, gains=gains, filtered=filtered, period=period)
+def run_fine(sync: Sync, fine_bits: int = FINE_BITS, lookahead_halves: int = LOOKAHEAD_HALVES,
+             n: int = N, window: int = WINDOW, table=None) -> dict[str, np.ndarray]:
+    """The model of prenc_fine (prenc_velocity and prenc_fine_position; with `table`, a
+    calibration table's corrections, CAL = 1), clock by clock."""
+    cal = int(table is not None)
+    # With a table the fine position is CAL_DELAY clocks later: the board extrapolates
+    # over them too (prenc_board's LOOKAHEAD_HALVES).
+    fine = Fine(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves + 2 * CAL_DELAY * cal,
+                window=window, cal=cal, table=table)
     vel = fine.velocity
     total = len(sync.step)
     v_out = np.zeros(total)
@@ -131,7 +115,7 @@ def run_fine(sync: Sync, window: int | None = None, fine_bits: int = FINE_BITS,
     fine_pos = np.zeros(total, dtype=np.int64)
     interpolated = np.zeros(total, dtype=np.int8)
     step, cw, pos = sync.step.tolist(), sync.cw.tolist(), sync.pos_hyb.tolist()
-    scale = 1.0 / (1 << FRAC)
+    scale = 1.0 / (1 << V_FRAC)
     for c in range(total):
         fine.clock(pos[c], 1, step[c], cw[c], 0)
         v_out[c] = vel.velocity * scale
@@ -255,7 +239,7 @@ def cases() -> list[Case]:
     out: list[Case] = []
     for r in STEADY_RPM:
         v = rpm(r)
-        warm = max(6.0, 6 * v * WINDOW / CLK_HZ)         # slots: three windows and more
+        warm = max(6.0, 24 * v * WINDOW / CLK_HZ)        # slots: the running mean settled
         measured = max(1.0 if r == 1 else 2.0, v * 30_000 / CLK_HZ)
         theta = _traj().constant(v, (warm + measured) / v).theta
         start = int(warm / v * CLK_HZ)
@@ -313,27 +297,80 @@ def score(case: Case, sync: Sync, fine_quarters: np.ndarray, velocity: np.ndarra
     return Row(stats(err), stats(v_err), zero_after)
 
 
-def evaluate(case: Case, printing: Printing | None) -> dict[str, Row]:
-    """The coarse position, ours in four configurations (the tracker with the gain table
-    for the disc: sigma ideal or printed) and the three baselines in one case."""
+BASELINES = ("0.11", "period", "mixed", "count")
+
+
+def previous_velocity(sync: Sync) -> np.ndarray:
+    """0.11.0's default velocity (full-cycle windows of 2048 clocks, the fit), quarters per
+    clock, clock by clock."""
+    from .previous_velocity import FRAC, Velocity
+
+    vel = Velocity(window=2048)
+    out = np.zeros(len(sync.step))
+    for c, (step, cw) in enumerate(zip(sync.step.tolist(), sync.cw.tolist())):
+        vel.clock(step, cw)
+        out[c] = vel.velocity / (1 << FRAC)
+    return out
+
+
+def baseline_velocities(sync: Sync) -> dict[str, np.ndarray]:
+    return {"0.11": previous_velocity(sync), "period": period_velocity(sync),
+            "mixed": sampled_velocity(sync, True), "count": sampled_velocity(sync, False)}
+
+
+def evaluate(case: Case, printing: Printing | None, table=None) -> dict[str, Row]:
+    """The coarse position, ours (with `table`, a calibration table's corrections: CAL =
+    1) and the baselines in one case."""
     sync = sync_stream(case.theta, printing)
-    ours = run_fine(sync)
-    quarter = run_fine(sync, quarter_windows=1)
-    mean = run_fine(sync, accel_fit=0)
-    small = run_fine(sync, period=1)
-    # the tracker as a user builds it for the disc: the ideal disc's gain table (TRACKER = 1),
-    # or the printed disc's and its filtered position (TRACKER = 2)
-    tracker = run_fine(sync, gains=tracker_gains.table(N, CLK_HZ, tracker_gains.SIGMA["ideal" if printing is None
-                                                                                     else "printed"]),
-                       filtered=int(printing is not None))
+    ours = run_fine(sync, table=table)
     scale = 1 << FINE_BITS
     rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
-            "ours": score(case, sync, ours["fine"] / scale, ours["velocity"]),
-            "quarter": score(case, sync, quarter["fine"] / scale, quarter["velocity"]),
-            "mean": score(case, sync, mean["fine"] / scale, mean["velocity"]),
-            "small": score(case, sync, small["fine"] / scale, small["velocity"]),
-            "tracker": score(case, sync, tracker["fine"] / scale, tracker["velocity"])}
-    for name, velocity in (("period", period_velocity(sync)), ("mixed", sampled_velocity(sync, True)),
-                           ("count", sampled_velocity(sync, False))):
+            "ours": score(case, sync, ours["fine"] / scale, ours["velocity"])}
+    for name, velocity in baseline_velocities(sync).items():
         rows[name] = score(case, sync, interpolate(sync, velocity) / scale, velocity)
     return rows
+
+
+def whole_turns_case(rpm_value: float, turns: int = 1) -> Case:
+    """A steady speed over whole turns, after the velocity has settled: the printed disc's
+    eccentricity is once a turn, and a short arc would flatter or hurt an estimator."""
+    v = rpm(rpm_value)
+    warm = max(6.0, 24 * v * WINDOW / CLK_HZ)
+    theta = _traj().constant(v, (warm + turns * (1 << N)) / v).theta
+    start = int(warm / v * CLK_HZ)
+    return Case(f"{rpm_value} rpm, {turns} turn{'s' if turns > 1 else ''}", theta, np.arange(start, len(theta) - 1))
+
+
+STEPS = ((600, 6000), (6000, 600), (10, 10000), (10000, 10))
+
+
+def settle_clocks(velocity: np.ndarray, truth: np.ndarray, start: int, within: float = 0.0005) -> int | None:
+    """Clocks from `start` until the velocity is within `within` of the truth and stays so
+    to the end (None: it never does)."""
+    err = np.abs(velocity[start:-1] - truth[start:]) > within * np.abs(truth[start:])
+    bad = np.flatnonzero(err)
+    if len(bad) == 0:
+        return 0
+    return None if bad[-1] >= len(err) - 1 else int(bad[-1] + 1)
+
+
+def step_rows() -> list[tuple[str, list[str]]]:
+    """For each step of speed (at once) in STEPS: the clocks until each estimator's
+    velocity is within 0.05 % and stays, and in edge periods of the new speed."""
+    out = []
+    for before, after in STEPS:
+        v0, v1 = rpm(before), rpm(after)
+        traj = _traj().constant(v0, max(3e-3, 30 / v0))
+        start = len(traj.theta)
+        theta = traj.constant(v1, max(4e-3, 40 / v1)).theta
+        sync = sync_stream(theta, None)
+        truth = 4 * (theta[1:] - theta[:-1])
+        edges = np.flatnonzero(sync.step)
+        period = float(np.median(np.diff(edges[edges > start])))
+        velocities = {"ours": run_fine(sync)["velocity"], **baseline_velocities(sync)}
+        cells = []
+        for name, velocity in velocities.items():
+            k = settle_clocks(velocity, truth, start)
+            cells.append("never" if k is None else f"{k} ({k / period:.1f})")
+        out.append((f"{before} -> {after} rpm", cells))
+    return out

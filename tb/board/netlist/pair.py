@@ -149,9 +149,9 @@ def pair_verilog(board: str, out: Path, parameters: dict[str, object]) -> Path:
 
 
 # Cells the netlists never hold, or hold only as boxes that our models replace: the
-# PLLs (no clock out), ECP5's DP16KD (no behaviour), and TRELLIS_COMB (a placed cell,
-# whose $error in a generate block Icarus does not take).
-NOT_FROM_YOSYS = ("SB_PLL40_\\w+", "EHXPLLL", "DP16KD", "TRELLIS_COMB")
+# PLLs (no clock out), ECP5's DP16KD and MULT18X18D (no behaviour), and TRELLIS_COMB (a
+# placed cell, whose $error in a generate block Icarus does not take).
+NOT_FROM_YOSYS = ("SB_PLL40_\\w+", "EHXPLLL", "DP16KD", "MULT18X18D", "TRELLIS_COMB")
 
 
 def cell_library(board: str, out: Path) -> list[Path]:
@@ -178,7 +178,7 @@ def cell_library(board: str, out: Path) -> list[Path]:
     path.write_text(text)
     models = [MODELS / "prenc_sim_plls.v"]
     if family == "ecp5":
-        models.append(MODELS / "prenc_sim_dp16kd.v")
+        models += [MODELS / "prenc_sim_dp16kd.v", MODELS / "prenc_sim_mult18x18d.v"]
     return [path, *models]
 
 

@@ -2,12 +2,11 @@
 """Every board build, simulated as the netlist Yosys makes of it, equals its RTL clock
 for clock.
 
-For the iCEstick, the iCEBreaker and the ULX3S, and the ULX3S with its velocity from
-prenc_tracker (`scripts/synth.py --board ulx3s --tracker printed`: its gain table in DP16KD):
-the board's top is synthesized as `make synth` does it (scripts/synth.py's Yosys step: the same parameters, ROM and
+For the iCEstick, the iCEBreaker and the ULX3S (whose fine velocity's program and
+register file are block RAM: SB_RAM40_4K, DP16KD): the board's top is synthesized as `make synth` does it (scripts/synth.py's Yosys step: the same parameters, ROM and
 `synth_<family>`), written as Verilog, and simulated on Icarus beside its RTL, with
 the vendor's cell models (pair.py: Yosys's cells_sim.v; our models of the PLLs and of
-ECP5's DP16KD, which Yosys has only as boxes). Both run from configuration: the
+ECP5's DP16KD and MULT18X18D, which Yosys has only as boxes). Both run from configuration: the
 PLL's lock, the power-on reset, the ROM's contents from its INIT parameters on one
 side and $readmemh on the other, every flip-flop's initial value (0 on the netlist, as
 a configured FPGA's; X in the RTL until its reset or first load).
@@ -153,11 +152,9 @@ async def the_netlist_equals_the_rtl_clock_for_clock(dut):
     assert mismatches == 0, f"the netlist differed from the RTL at {mismatches} falling edges (first: see the log)"
 
 
-def prepare(board: str, where: Path, rtl_edit=None,
-            tracker: str | None = None) -> tuple[list[Path], dict[str, str], list[str]]:
+def prepare(board: str, where: Path, rtl_edit=None) -> tuple[list[Path], dict[str, str], list[str]]:
     """The netlist of the board build, the pair, and the sources to simulate; with
-    `rtl_edit` (path, old, new), the RTL is first copied and that text replaced; with
-    `tracker` (a disc: ideal or printed), the build with prenc_tracker."""
+    `rtl_edit` (path, old, new), the RTL is first copied and that text replaced."""
     import pair
     import synth
 
@@ -175,8 +172,7 @@ def prepare(board: str, where: Path, rtl_edit=None,
         copied.write_text(text.replace(old, new))
         rtl = [copied if p.resolve() == Path(path).resolve() else p for p in rtl]
     host_link = pair.BOARD_PINS[board].host_link
-    parameters = synth.board_parameters(b, N, where, baud=BAUD[board] if host_link else None,
-                                        tracker=tracker)  # as make synth
+    parameters = synth.board_parameters(b, N, where, baud=BAUD[board] if host_link else None)  # as make synth
     net = pair.netlist(board, where, parameters, rtl)
     sources = [*pair.cell_library(board, where), *rtl, net, pair.pair_verilog(board, where, parameters)]
     env = {"PRENC_BOARD": board, "PRENC_CLK_HZ": str(round(b.clock_mhz * 1e6))}
@@ -187,13 +183,11 @@ def prepare(board: str, where: Path, rtl_edit=None,
     return sources, env, args
 
 
-@pytest.mark.parametrize("board, tracker", [("icestick", None), ("icebreaker", None), ("ulx3s", None),
-                                            ("ulx3s", "printed")])
-def test_board_netlist(board, tracker):
-    build = board + (f"-tracker-{tracker}" if tracker else "")
-    sources, env, args = prepare(board, SIM_BUILD / "netlist" / build, tracker=tracker)
+@pytest.mark.parametrize("board", ["icestick", "icebreaker", "ulx3s"])
+def test_board_netlist(board):
+    sources, env, args = prepare(board, SIM_BUILD / "netlist" / board)
     run(__file__, "board_pair", "icarus", sources=sources, extra_env=env, build_args=args,
-        parameters={"BUILD": build})
+        parameters={"BUILD": board})
 
 
 def test_a_register_without_its_reset_is_caught():

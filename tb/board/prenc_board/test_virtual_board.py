@@ -83,18 +83,3 @@ def test_prenc_host_reads_the_virtual_board():
     text = (SIM_BUILD / "virtual_board.log").read_text()
     assert f"UART on {port}" in text
     assert "x slower than real time" in text, text[-2000:]
-
-
-def test_board_sim_refuses_the_icebreakers_build_with_a_calibration_table(capsys):
-    """--period (the iCEBreaker's fine blocks: PERIOD = 1, no edge capture) has no
-    calibration table: with --cal it stops before building, naming both."""
-    sys.path.insert(0, str(REPO / "scripts"))
-    import board_sim
-
-    with pytest.raises(SystemExit) as stop:
-        board_sim.parse(["--period", "--cal"])
-    assert stop.value.code == 2
-    err = capsys.readouterr().err
-    assert "--period" in err and "--cal" in err
-    args = board_sim.parse(["--period"])
-    assert args.period and not args.cal

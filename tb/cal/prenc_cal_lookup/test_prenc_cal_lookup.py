@@ -5,8 +5,10 @@ file's checks.
 The quarter asked for walks both ways (a quarter per clock at times), jumps, and
 stands; words are written near it and far from it; resets come. Expected values come
 from the model, whose memory is the table file read by prenc.cal.table (the file
-format's reader, not the RTL): c_lo and c_hi are compared whenever `ok`, `ok` always.
-A second run starts from an all-zero table (CAL_FILE "") and fills it by writes.
+format's reader, not the RTL): `ok` always; with it, the pair and its quarter, and
+the pair must be the table's words of that quarter (the table as written so far). A
+quarter held for READ_DELAY + 2 clocks, with no write or reset in them, must have its
+pair. A second run starts from an all-zero table (CAL_FILE "") and fills it by writes.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ import pytest
 import cocotb
 
 from common import clock_and_check, rng, start_clock_and_reset
-from prenc.cal.lookup import CalLookup
+from prenc.cal.lookup import READ_DELAY, CalLookup
 from prenc.cal.table import Table, read
 from runner import SIM_BUILD, SIMULATORS, run
 from yosys import synthesize
@@ -40,28 +42,41 @@ async def matches_the_model(dut):
     r = np.random.default_rng(rng().randrange(1 << 30))
     size = 4 << N
     zero = os.environ.get("PRENC_CAL_ZERO") == "1"
-    model = CalLookup(N, None if zero else read(table_file(), n=N).c)
+    words = [0] * size if zero else [int(w) for w in read(table_file(), n=N).c]
+    model = CalLookup(N, words)
     names = ("quarter", "write", "address", "data", "rst")
     await start_clock_and_reset(dut, 2, {k: 0 for k in names})
     model.clock(0, rst=1)
-    q, ok_clocks = int(r.integers(0, size)), 0
+    q, ok_clocks, held, quiet = int(r.integers(0, size)), 0, 0, 0
     for c in range(CLOCKS):
         roll = r.random()
+        before = q
         if roll < 0.02:
             q = int(r.integers(0, size))                 # a jump
-        elif roll < 0.55:
-            q += int(r.choice([-1, 1]))                  # a quarter per clock
-        write = int(r.random() < (0.3 if zero and c < 3000 else 0.05))
+        elif roll < 0.45:
+            q = (q + int(r.choice([-1, 1]))) % size      # a quarter per clock
+        held = held + 1 if q == before else 1
+        write = int(r.random() < (0.3 if zero and c < 3000 else 0.03))
         address = (q + int(r.integers(-2, 4))) % size if r.random() < 0.5 else int(r.integers(0, size))
         data = int(r.integers(-(1 << 15), 1 << 15))
         rst = int(r.random() < 0.002)
-        now = {"quarter": q % size, "write": write, "address": address, "data": data & 0xFFFF,
+        quiet = 0 if (write or rst) else quiet + 1
+        now = {"quarter": q, "write": write, "address": address, "data": data & 0xFFFF,
                "rst": rst}
         model.clock(q, write, address, data, rst)
         expected = {"ok": model.ok}
         if model.ok:
-            expected.update(c_lo=model.lo & 0xFFFF, c_hi=model.hi & 0xFFFF)
+            expected.update(c_lo=model.lo & 0xFFFF, c_hi=model.hi & 0xFFFF,
+                            pair_quarter=model.quarter)
+            # The definition: the table's words of that quarter, as last written.
+            assert (model.lo, model.hi) == (words[model.quarter], words[(model.quarter + 1) % size])
             ok_clocks += 1
+        elif held >= READ_DELAY + 2 and quiet >= READ_DELAY + 2:
+            raise AssertionError(f"clock {c}: quarter {q} held {held} clocks has no pair")
+        if model.ok and held >= READ_DELAY + 2 and quiet >= READ_DELAY + 2:
+            assert model.quarter == q, c
+        if write:
+            words[address] = ((data + (1 << 15)) % (1 << 16)) - (1 << 15)
         await clock_and_check(dut, now, expected, lambda: f"clock {c}")
     assert ok_clocks > CLOCKS // 2
 

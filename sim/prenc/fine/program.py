@@ -1,0 +1,426 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The velocity's program: what prenc_velocity's engine (prenc.fine.engine) runs.
+
+The estimator, in the engine's words (docs/fine.md):
+
+- A window runs from a step (its anchor) to the next step if that one is at least
+  WINDOW / 2 clocks later (a slow disc: a window of one quarter, so that an
+  acceleration shows at the next edge), else to the first step at least WINDOW clocks
+  later: N1 (the distance between the two edges' true places, 2^-12 quarter) in P1
+  clocks. Its mean speed V1 = N1 / P1 (2^-32 quarter per clock).
+- The constant-speed test: |V1 - S| < 2 (S + 2 DELTA) / P1, S the speed as it is,
+  DELTA an edge's residual error with a calibration table. A window's mean is off by
+  less than (S + 2 DELTA) / P1 (a clock's quantization at each end, DELTA at each
+  edge); twice that leaves room for the speed's own error.
+  - Passed: S <- S + (V1 - S) / 2^RUN_SHIFT, acceleration 0: the speed is a running
+    mean of the windows, so a steady speed reads the mean of many.
+  - Failed, but the last two windows agree with each other within the same bound: the
+    speed is constant again (an acceleration ended, or the last fit was off): S <- (V1 +
+    V2) / 2, acceleration 0.
+  - Else the speed changed, and how depends on the windows before (UPS, DOWNS: how many
+    changed the same way, up to 2). V1 and the last window's V2 are the speeds at their
+    middles, (P1 + P2) / 2 clocks apart: the fit's acceleration a = 2 (V1 - V2) / (P1 +
+    P2) (2^-32 quarter per clock^2), its speed V1 + a (P1 / 2 + LATENCY): P1 / 2 from
+    the window's middle to its closing step, LATENCY from that step to the load, which
+    the program waits for, exactly.
+    - The first change: S <- V1, acceleration 0.
+    - The second: the fit's speed, acceleration 0 (HOLD).
+    - The third and on: the fit, the acceleration integrated from then on.
+    A step of speed (at once) changes two windows at most, the one it falls in and the
+    next, so it is never integrated: until the window after them agrees, the speed is
+    between the two speeds widened by the second change's extrapolation: at most that
+    change, so at most the step, where WINDOW >= 4 LATENCY = 1024 (P2 >= WINDOW / 2).
+  - The first window after a start: S <- V1.
+- Overdue: the engine divides LEVEL (the quarter's true width and a quarter) by the
+  clocks since the last step, whenever it has nothing else to do. The disc has turned
+  less than LEVEL since that step, so its mean speed is below the quotient: the speed
+  is bounded by it (acceleration 0). Half as long again without a step is a stop: 0.
+  The first bound comes 1.25 edge periods after the last step, the stop 1.9 periods
+  after it: a disc that stops reads 0 within two of its edge periods, and one whose
+  speed falls to half or less at once reads 0 until the first window after its next
+  edge (the speed is below the bound, 0.67 of the last, all the while).
+- The first step after a start (reset, a reversal, an illegal transition, a stop) is
+  the anchor of the first window.
+- A step is held (its clock and its edge's place: STIME, SPOSC) from the clock it comes
+  until the program is done with it (DONE); the steps in between are counted but not
+  held. LTIME and LWIDTH are the last step's clock and the width of the quarter it
+  entered, held or not.
+"""
+
+from __future__ import annotations
+
+from .engine import CONDITIONS, FLAGS, OUT_KINDS, SPECIALS, Instruction
+
+CAL_FRAC = 12          # N1, the table's corrections, LEVEL: 2^-12 quarter
+V_FRAC = 32            # speeds: 2^-32 quarter per clock
+A_FRAC = 32            # the acceleration: 2^-32 quarter per clock^2
+LATENCY = 256          # a fitted speed shows LATENCY clocks after its closing step
+RUN_SHIFT = 3          # the running mean's weight: 1/8
+LEVEL_0 = (5 << CAL_FRAC) // 4     # an overdue edge: the quarter's width and a quarter
+DELTA = {0: 0, 1: 1 << (V_FRAC - 10)}   # an edge's residual error with a table: 2^-10 quarter
+OLD = 1 << 30          # an anchor older than this (clocks) is dropped
+
+# The register file: the constants first (initial values), then the variables.
+RF = ("C_ZERO", "C_WINDOW", "C_SHORT", "C_QUARTERS", "C_LEVEL0", "C_2DELTA", "C_LATENCY",
+      "C_OLD", "C_ONE", "C_TWO", "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "STOP_AT")
+QUARTERS = (3 << CAL_FRAC) // 2        # below 1.5 quarters: a window of one quarter
+
+
+def constants(window: int, cal: int) -> dict[int, int]:
+    values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2, "C_QUARTERS": QUARTERS,
+              "C_LEVEL0": LEVEL_0, "C_2DELTA": 2 * DELTA[cal], "C_LATENCY": LATENCY, "C_OLD": OLD,
+              "C_ONE": 1, "C_TWO": 2}
+    return {RF.index(name): value for name, value in values.items()}
+
+
+# The program, as (label, op, argument, argument): an argument is an RF word, a special
+# (s.NAME), a flag, an out kind, a condition, a count or a label.
+WRITTEN = [
+    # Nothing pending: bound the speed by an overdue edge, stop, or drop an old anchor.
+    ("IDLE", "JMP", "PEND", "STEP"),
+    (None, "JMP", "HAVE", "AGE"),
+    (None, "JMP", "NOT_ANCH", "IDLE"),
+    (None, "LOAD", "s.NOW"),
+    (None, "SUB", "W_TIME"),
+    (None, "SUB", "C_OLD"),
+    (None, "JMP", "NEG", "IDLE"),
+    (None, "FLAG", "ANCH", 0),
+    (None, "JMP", "ALWAYS", "IDLE"),
+    ("AGE", "LOAD", "s.NOW"),
+    (None, "SUB", "s.LTIME"),
+    (None, "STORE", "T1"),                 # clocks since the last step
+    (None, "JMP", "NOT_BND", "BOUND"),
+    (None, "SUB", "STOP_AT"),
+    (None, "JMP", "NOT_NEG", "STOP"),
+    ("BOUND", "LOAD", "s.LWIDTH"),         # LEVEL: the quarter's width and a quarter
+    (None, "ADD", "C_LEVEL0"),
+    (None, "NUM"),
+    (None, "DIV", "T1", 52, "abortable"),  # LEVEL / since, 2^-32 quarter per clock
+    (None, "QUOT"),
+    (None, "SUB", "s.SPEED"),
+    (None, "JMP", "NOT_NEG", "IDLE"),      # not overdue
+    (None, "ADD", "s.SPEED"),
+    (None, "OUT", "SPEED_A0"),
+    (None, "JMP", "BND", "IDLE"),
+    (None, "FLAG", "BND", 1),              # the first bound: a stop at 1.5 times since
+    (None, "LOAD", "T1"),
+    (None, "HALF", 1),
+    (None, "ADD", "T1"),
+    (None, "STORE", "STOP_AT"),
+    (None, "JMP", "ALWAYS", "IDLE"),
+    ("STOP", "LOAD", "C_ZERO"),
+    (None, "OUT", "SPEED_A0"),
+    (None, "FLAG", "ANCH", 0),
+    (None, "FLAG", "HAVE", 0),
+    (None, "FLAG", "BND", 0),
+    (None, "JMP", "ALWAYS", "IDLE"),
+    # A step (held until DONE): the quarter's LEVEL, then a window's close or its anchor.
+    ("STEP", "FLAG", "BND", 0),
+    (None, "JMP", "NOT_ANCH", "ANCHOR"),
+    (None, "LOAD", "s.STIME"),
+    (None, "SUB", "W_TIME"),
+    (None, "STORE", "P1"),
+    (None, "SUB", "C_SHORT"),
+    (None, "JMP", "NEG", "DONE"),          # shorter than WINDOW / 2: the window goes on
+    (None, "LOAD", "s.SPOSC"),
+    (None, "SUB", "W_POSC"),
+    (None, "STORE", "T1"),                 # N1
+    (None, "JMP", "NEG", "ANCHOR"),        # (a table that runs backwards: no window)
+    (None, "SUB", "C_QUARTERS"),
+    (None, "JMP", "NEG", "CLOSE"),         # one quarter: it closes
+    (None, "LOAD", "P1"),
+    (None, "SUB", "C_WINDOW"),
+    (None, "JMP", "NEG", "DONE"),          # more quarters: at WINDOW clocks
+    ("CLOSE", "LOAD", "s.STIME"),          # this step anchors the next window
+    (None, "STORE", "W_TIME"),
+    (None, "LOAD", "s.SPOSC"),
+    (None, "STORE", "W_POSC"),
+    (None, "LOAD", "T1"),
+    (None, "NUM"),
+    (None, "DIV", "P1", 52),               # V1 = N1 / P1
+    (None, "QUOT"),
+    (None, "STORE", "V1"),
+    (None, "JMP", "NOT_HAVE", "FIRST"),
+    # The test: |V1 - S| < 2 (S + 2 DELTA) / P1, as |V1 - S| / 2 < (S + 2 DELTA) / P1.
+    (None, "LOAD", "s.SPEED"),
+    (None, "ADD", "C_2DELTA"),
+    (None, "NUM"),
+    (None, "DIV", "P1", 32),
+    (None, "QUOT"),
+    (None, "STORE", "T0"),
+    (None, "LOAD", "V1"),
+    (None, "SUB", "s.SPEED"),
+    (None, "HALF", 1),
+    (None, "JMP", "NEG", "BELOW"),
+    (None, "SUB", "T0"),
+    (None, "JMP", "NEG", "CONSTANT"),
+    (None, "JMP", "ALWAYS", "AGREE"),
+    ("BELOW", "ADD", "T0"),
+    (None, "JMP", "NOT_NEG", "CONSTANT"),
+    # Failed: do the last two windows agree with each other (|V1 - V2| / 2 < T0)? Then
+    # the speed is constant again: S <- (V1 + V2) / 2, acceleration 0. Else the fit.
+    ("AGREE", "LOAD", "V1"),
+    (None, "SUB", "V2"),
+    (None, "HALF", 1),
+    (None, "JMP", "NEG", "BELOW_V2"),
+    (None, "SUB", "T0"),
+    (None, "JMP", "NOT_NEG", "FIT"),
+    (None, "JMP", "ALWAYS", "AGREED"),
+    ("BELOW_V2", "ADD", "T0"),
+    (None, "JMP", "NEG", "FIT"),
+    ("AGREED", "LOAD", "V1"),
+    (None, "ADD", "V2"),
+    (None, "HALF", 1),
+    (None, "OUT", "SPEED_A0"),
+    (None, "JMP", "ALWAYS", "STEADY"),
+    ("CONSTANT", "LOAD", "V1"),            # S + (V1 - S) / 2^RUN_SHIFT
+    (None, "SUB", "s.SPEED"),
+    (None, "HALF", RUN_SHIFT),
+    (None, "ADD", "s.SPEED"),
+    (None, "OUT", "SPEED_A0"),
+    ("STEADY", "LOAD", "C_ZERO"),          # no run of changes
+    (None, "STORE", "UPS"),
+    (None, "STORE", "DOWNS"),
+    (None, "JMP", "ALWAYS", "NEXT"),
+    # V1 changed from V2 (UPS, DOWNS: the windows before that changed the same way, up
+    # to 2). The first change: S <- V1, acceleration 0. The second: the fit's speed, but
+    # acceleration 0 (HOLD < 0). The third and on: the fit. (A step of speed changes
+    # two windows at most, the one it falls in and the next: the second change of a step
+    # overshoots by the fit's extrapolation alone, not its integration.)
+    # The fit: a = 2 (V1 - V2) / (P1 + P2), S <- V1 + a (P1 / 2 + LATENCY).
+    ("FIT", "LOAD", "P1"),
+    (None, "ADD", "P2"),
+    (None, "STORE", "T1"),
+    (None, "LOAD", "V1"),
+    (None, "SUB", "V2"),
+    (None, "JMP", "NEG", "SLOWER"),
+    (None, "LOAD", "C_ZERO"),
+    (None, "STORE", "DOWNS"),
+    (None, "LOAD", "UPS"),
+    (None, "SUB", "C_ONE"),
+    (None, "JMP", "NEG", "FIRST_UP"),
+    (None, "SUB", "C_ONE"),
+    (None, "STORE", "HOLD"),               # UPS - 2
+    (None, "LOAD", "C_TWO"),
+    (None, "STORE", "UPS"),
+    (None, "LOAD", "V1"),
+    (None, "SUB", "V2"),
+    (None, "NUM"),
+    (None, "DIV", "T1", 33),               # 2 |V1 - V2| / (P1 + P2)
+    (None, "QUOT"),
+    (None, "STORE", "T0"),                 # a
+    (None, "JMP", "ALWAYS", "EXTRAPOLATE"),
+    ("FIRST_UP", "LOAD", "C_ONE"),
+    (None, "STORE", "UPS"),
+    (None, "JMP", "ALWAYS", "JUMPED"),
+    ("SLOWER", "LOAD", "C_ZERO"),
+    (None, "STORE", "UPS"),
+    (None, "LOAD", "DOWNS"),
+    (None, "SUB", "C_ONE"),
+    (None, "JMP", "NEG", "FIRST_DOWN"),
+    (None, "SUB", "C_ONE"),
+    (None, "STORE", "HOLD"),               # DOWNS - 2
+    (None, "LOAD", "C_TWO"),
+    (None, "STORE", "DOWNS"),
+    (None, "LOAD", "V2"),
+    (None, "SUB", "V1"),
+    (None, "NUM"),
+    (None, "DIV", "T1", 33),
+    (None, "QUOT"),
+    (None, "STORE", "T0"),                 # |a|
+    (None, "LOAD", "C_ZERO"),
+    (None, "SUB", "T0"),
+    (None, "STORE", "T0"),                 # a, signed
+    ("EXTRAPOLATE", "STORE", "T1"),        # (ACC: a)
+    (None, "LOAD", "P1"),
+    (None, "HALF", 1),
+    (None, "ADD", "C_LATENCY"),
+    (None, "NUM"),
+    (None, "MUL", "T1", 32),               # a (P1 / 2 + LATENCY)
+    (None, "ADD", "V1"),
+    (None, "STORE", "T1"),                 # the speed to load
+    (None, "LOAD", "HOLD"),
+    (None, "JMP", "NEG", "NO_ACCEL"),
+    (None, "LOAD", "T0"),
+    (None, "JMP", "ALWAYS", "WAIT"),
+    ("NO_ACCEL", "LOAD", "C_ZERO"),        # the second change of a run
+    # Wait for the load's clock: LATENCY after the closing step.
+    ("WAIT", "STORE", "T0"),               # a, signed
+    (None, "LOAD", "T1"),
+    (None, "JMP", "NEG", "ZERO"),          # decelerated through 0
+    (None, "WAIT", LATENCY - 3),           # the output shows it LATENCY after the step
+    (None, "OUT", "SPEED"),
+    (None, "LOAD", "T0"),
+    (None, "OUT", "ACCEL"),
+    (None, "JMP", "ALWAYS", "NEXT"),
+    ("ZERO", "LOAD", "C_ZERO"),
+    (None, "OUT", "SPEED_A0"),
+    (None, "JMP", "ALWAYS", "NEXT"),
+    ("FIRST", "LOAD", "C_ZERO"),
+    (None, "STORE", "UPS"),
+    (None, "STORE", "DOWNS"),
+    (None, "FLAG", "HAVE", 1),
+    ("FIRST_DOWN", "LOAD", "C_ONE"),
+    (None, "STORE", "DOWNS"),
+    ("JUMPED", "LOAD", "V1"),
+    (None, "OUT", "SPEED_A0"),
+    ("NEXT", "LOAD", "V1"),                # the last window, for the next fit
+    (None, "STORE", "V2"),
+    (None, "LOAD", "P1"),
+    (None, "STORE", "P2"),
+    (None, "JMP", "ALWAYS", "DONE"),
+    ("ANCHOR", "LOAD", "s.STIME"),
+    (None, "STORE", "W_TIME"),
+    (None, "LOAD", "s.SPOSC"),
+    (None, "STORE", "W_POSC"),
+    (None, "FLAG", "ANCH", 1),
+    (None, "FLAG", "HAVE", 0),
+    ("DONE", "DONE"),                      # the next step is captured from now on
+    (None, "JMP", "ALWAYS", "IDLE"),
+    # A restart (reset, a reversal, an illegal transition): the speed is 0 already.
+    ("RESTART", "FLAG", "ANCH", 0),
+    (None, "FLAG", "HAVE", 0),
+    (None, "FLAG", "BND", 0),
+    (None, "JMP", "ALWAYS", "IDLE"),
+]
+
+
+def reads_operand(row) -> bool:
+    op, *args = row[1:]
+    return op in ("LOAD", "ADD", "SUB", "DIV", "MUL")
+
+
+def with_landings(written) -> list[tuple]:
+    """The program as written, with a NOP before each labelled instruction that reads an
+    operand: an operand is fetched while the instruction before it in the program runs,
+    so where a jump lands there must be one clock that reads none (prenc.fine.engine)."""
+    out = []
+    for row in written:
+        if row[0] and reads_operand(row):
+            out.append((row[0], "NOP"))
+            row = (None, *row[1:])
+        out.append(row)
+    return out
+
+
+SOURCE = with_landings(WRITTEN)
+
+
+def assemble(source=SOURCE) -> list[Instruction]:
+    labels = {row[0]: k for k, row in enumerate(source) if row[0]}
+    program = []
+    for row in source:
+        _, op, *args = row
+        a, n, special, abortable = 0, 0, False, "abortable" in args
+        args = [x for x in args if x != "abortable"]
+        if op == "HALF":
+            n = args[0]
+        elif op in ("LOAD", "ADD", "SUB", "STORE", "DIV", "MUL"):
+            name = args[0]
+            if name.startswith("s."):
+                a, special = SPECIALS.index(name[2:]), True
+            else:
+                a = RF.index(name)
+            if op in ("DIV", "MUL"):
+                n = args[1]
+        elif op == "OUT":
+            a = OUT_KINDS.index(args[0])
+        elif op == "FLAG":
+            a, n = FLAGS.index(args[0]), args[1]
+        elif op == "WAIT":
+            n = args[0]
+        elif op == "JMP":
+            a, n = CONDITIONS.index(args[0]), labels[args[1]]
+        program.append(Instruction(op, a, n, special, abortable))
+    return program
+
+
+PROGRAM = assemble()
+RESTART = next(k for k, row in enumerate(SOURCE) if row[0] == "RESTART")
+
+# The program as the RTL's ROM: rtl/fine/prenc_velocity_program.v, written by
+# `python -m prenc.fine.program` (a test checks it is up to date). A word also holds the
+# operand of the instruction after it in the program (a special's number, or the
+# register file's address), which the RTL fetches while it runs.
+WORD_BITS = 29   # the adder's controls 4, op 4, special 1, abortable 1, a 5, n 8, next (s 1, a 5)
+ADDER_CONTROLS = {"step": ("DIV", "MUL"), "invert": ("SUB", "DIV"), "mul": ("MUL",),
+                  "load": ("LOAD",)}
+
+
+def read_address(ins: Instruction) -> int:
+    """The operand the RTL fetches for `ins`: its special's number, or the register
+    file's address it reads (0 if none); the RTL reads both at that number."""
+    if ins.special:
+        return ins.a
+    r = ins.reads()
+    return 0 if r is None else r
+
+
+def encode(k: int, program=PROGRAM) -> int:
+    from .engine import OPS
+
+    ins = program[k]
+    if not 0 <= ins.n < 256 or not 0 <= ins.a < 32:
+        raise ValueError(f"{ins}: a field out of range")
+    following = program[k + 1] if k + 1 < len(program) else Instruction("NOP")
+    next_a = (int(following.special) << 5) | read_address(following)
+    controls = sum(int(ins.op in ops) << b for b, ops in enumerate(reversed(ADDER_CONTROLS.values())))
+    return (controls << 25) | (OPS.index(ins.op) << 21) | (int(ins.special) << 20) | \
+        (int(ins.abortable) << 19) | (ins.a << 14) | (ins.n << 6) | next_a
+
+
+def rom_verilog(program=PROGRAM, source=SOURCE) -> str:
+    """The ROM module (block RAM, read on the clock), one instruction a line with its
+    source as a comment."""
+    lines = [
+        "// SPDX-License-Identifier: Apache-2.0",
+        "// prenc_velocity_program: prenc_velocity's program in block RAM, a word a clock:",
+        "// {step, invert, mul, load, op[3:0], special, abortable, a[4:0], n[7:0], next_s,",
+        "// next_a[4:0]} (prenc.fine.engine, prenc.fine.program; docs/fine.md). step, invert,",
+        "// mul, load: the adder's controls, decoded here (DIV or MUL; SUB or DIV; MUL; LOAD).",
+        "// next_s, next_a: the operand of the instruction after it in the program (a special",
+        "// and its number, or the register file's address).",
+        "//",
+        "// Latency: word is the instruction at pc of the clock before (one clock).",
+        "//",
+        "// Written by `python -m prenc.fine.program` from sim/prenc/fine/program.py; do not edit.",
+        "`resetall",
+        "`timescale 1ns / 1ps",
+        "`default_nettype none",
+        "",
+        "module prenc_velocity_program (",
+        "  input  wire        clk,",
+        "  input  wire [7:0]  pc,",
+        f"  output reg  [{WORD_BITS - 1}:0] word,      // the word at pc, a clock later",
+        "  output wire [7:0]  restart    // where a restart goes",
+        ");",
+        "",
+        f"  reg [{WORD_BITS - 1}:0] rom [0:255];",
+        "",
+        f"  assign restart = 8'd{RESTART};",
+        "",
+        "  integer i;",
+        "  initial begin",
+        f"    for (i = 0; i < 256; i = i + 1) rom[i] = {WORD_BITS}'d0;",
+    ]
+    for k, row in enumerate(source):
+        label = f"{row[0]}: " if row[0] else ""
+        text = " ".join(str(x) for x in row[1:])
+        lines.append(f"    rom[{k}] = {WORD_BITS}'h{encode(k, program):07x};   // {label}{text}")
+    lines += [
+        "  end",
+        "",
+        "  always @(posedge clk) begin",
+        "    word <= rom[pc];",
+        "  end",
+        "",
+        "endmodule",
+        "",
+        "`resetall",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    print(rom_verilog(), end="")
