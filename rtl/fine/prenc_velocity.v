@@ -148,7 +148,7 @@ module prenc_velocity #(
 
   // The instruction's fields.
   wire        stepping  = ins[28];   // DIV or MUL   (the adder's controls, decoded in the
-  wire        invert    = ins[27];   // SUB           ROM)
+  wire        invert    = ins[27];   // SUB or DIV    ROM)
   wire        mul       = ins[26];   // MUL
   wire        load      = ins[25];   // LOAD
   wire [3:0]  op        = ins[24:21];
@@ -171,22 +171,19 @@ module prenc_velocity #(
   wire        abort     = (op == OP_DIV) && abortable && pend_reg;
 
   // One adder: LOAD 0 + operand, ADD acc + operand, SUB ~(~acc + operand) = acc -
-  // operand, a multiplication's shifted + operand (when low's top bit is 1), and a
-  // division's non-restoring step on 33 bits: the remainder (acc, signed) shifted, less
-  // the divisor ~(~shifted + divisor) while it is not negative, plus the divisor while
-  // it is. Its new remainder is the adder's result as it is, so the quotient bit (the
-  // result is not negative) goes to low alone. The inversions are on the accumulator's
-  // side, off the register file's path; DIV and MUL take their operand on their first
-  // clock (op_reg), while the register file fetches the next instruction's.
-  wire        flip      = stepping ? (!mul && !acc_reg[31]) : invert;
-  wire [32:0] shifted   = {acc_reg, stepping & !mul & low_reg[31]};
-  wire [32:0] add_a     = stepping ? (flip ? ~shifted : shifted)
-                        : load ? 33'd0 : {1'b0, flip ? ~acc_reg : acc_reg};
-  wire [32:0] add_b     = {1'b0, stepping ? op_reg : operand};
-  wire [32:0] sum       = add_a + add_b;
-  wire [32:0] result    = flip ? ~sum : sum;
-  wire        fits      = !result[32];   // DIV: the quotient bit
+  // operand, a division's step ~(~shifted + divisor) = shifted - divisor (it fits
+  // without a carry), a multiplication's shifted + operand (when low's top bit is 1).
+  // The inversions are on the accumulator's side, off the register file's path; DIV and
+  // MUL take their operand on their first clock (op_reg), while the register file
+  // fetches the next instruction's.
+  wire [31:0] shifted   = {acc_reg[30:0], stepping & !mul & low_reg[31]};
+  wire [31:0] add_a     = stepping ? (mul ? shifted : ~shifted)
+                        : load ? 32'd0 : invert ? ~acc_reg : acc_reg;
+  wire [31:0] add_b     = stepping ? op_reg : operand;
+  wire [32:0] sum       = {1'b0, add_a} + {1'b0, add_b};
+  wire        fits      = !sum[32];   // shifted >= divisor
   wire        high_step = (op == OP_DIV) && going_reg && !abort && (left_reg > 8'd31);
+  wire [31:0] diff      = ~sum[31:0];
 
   // The conditions.
   reg taken;
@@ -272,8 +269,9 @@ module prenc_velocity #(
     left_reg  <= taking ? n : left_now - 1'b1;
     going_reg <= stay && iterates && !abort;
     case (op)
-      OP_LOAD, OP_ADD, OP_SUB: acc_reg <= result[31:0];
-      OP_MUL:   if (going_reg) acc_reg <= low_reg[31] ? sum[31:0] : shifted[31:0];
+      OP_LOAD, OP_ADD: acc_reg <= sum[31:0];
+      OP_SUB:   acc_reg <= diff;
+      OP_MUL:   if (going_reg) acc_reg <= low_reg[31] ? sum[31:0] : shifted;
       OP_HALF:  acc_reg <= {acc_reg[31], acc_reg[31:1]};
       OP_NUM: begin
         low_reg <= acc_reg;
@@ -282,7 +280,7 @@ module prenc_velocity #(
       OP_DIV: begin
         if (!going_reg) op_reg <= rd_reg;
         if (!abort && going_reg) begin
-          acc_reg <= result[31:0];
+          acc_reg <= fits ? diff : shifted;
           low_reg <= {low_reg[30:0], fits};
         end
       end

@@ -2,7 +2,7 @@
 // prenc_velocity_program: prenc_velocity's program in block RAM, a word a clock:
 // {step, invert, mul, load, op[3:0], special, abortable, a[4:0], n[7:0], next_s,
 // next_a[4:0]} (prenc.fine.engine, prenc.fine.program; docs/fine.md). step, invert,
-// mul, load: the adder's controls, decoded here (DIV or MUL; SUB; MUL; LOAD).
+// mul, load: the adder's controls, decoded here (DIV or MUL; SUB or DIV; MUL; LOAD).
 // next_s, next_a: the operand of the instruction after it in the program (a special
 // and its number, or the register file's address).
 //
@@ -47,7 +47,7 @@ module prenc_velocity_program (
     rom[17] = 29'h2314004;   // LOAD s.LWIDTH
     rom[18] = 29'h0410000;   // ADD C_LEVEL0
     rom[19] = 29'h0a00014;   // NUM
-    rom[20] = 29'h10cd0d00;   // DIV T1 52 abortable
+    rom[20] = 29'h18cd0d00;   // DIV T1 52 abortable
     rom[21] = 29'h1000023;   // QUOT
     rom[22] = 29'h870c000;   // SUB s.SPEED
     rom[23] = 29'h1a0c023;   // JMP NOT_NEG IDLE
@@ -90,14 +90,14 @@ module prenc_velocity_program (
     rom[60] = 29'h122c014;   // STORE W_POSC
     rom[61] = 29'h2250000;   // LOAD T1
     rom[62] = 29'h0a00011;   // NUM
-    rom[63] = 29'h10c44d00;   // DIV P1 52
+    rom[63] = 29'h18c44d00;   // DIV P1 52
     rom[64] = 29'h1000000;   // QUOT
     rom[65] = 29'h1230000;   // STORE V1
     rom[66] = 29'h1a16de3;   // JMP NOT_HAVE FIRST
     rom[67] = 29'h230c005;   // LOAD s.SPEED
     rom[68] = 29'h0414000;   // ADD C_2DELTA
     rom[69] = 29'h0a00011;   // NUM
-    rom[70] = 29'h10c44800;   // DIV P1 32
+    rom[70] = 29'h18c44800;   // DIV P1 32
     rom[71] = 29'h1000000;   // QUOT
     rom[72] = 29'h124c00c;   // STORE T0
     rom[73] = 29'h2230023;   // LOAD V1
@@ -157,7 +157,7 @@ module prenc_velocity_program (
     rom[127] = 29'h223000d;   // LOAD V1
     rom[128] = 29'h8634000;   // SUB V2
     rom[129] = 29'h0a00014;   // NUM
-    rom[130] = 29'h10c50840;   // DIV T1 33
+    rom[130] = 29'h18c50840;   // DIV T1 33
     rom[131] = 29'h1000000;   // QUOT
     rom[132] = 29'h124c000;   // STORE T0
     rom[133] = 29'h1a02740;   // JMP ALWAYS EXTRAPOLATE
@@ -178,7 +178,7 @@ module prenc_velocity_program (
     rom[148] = 29'h223400c;   // LOAD V2
     rom[149] = 29'h8630000;   // SUB V1
     rom[150] = 29'h0a00014;   // NUM
-    rom[151] = 29'h10c50840;   // DIV T1 33
+    rom[151] = 29'h18c50840;   // DIV T1 33
     rom[152] = 29'h1000000;   // QUOT
     rom[153] = 29'h124c000;   // STORE T0
     rom[154] = 29'h2200013;   // LOAD C_ZERO

@@ -24,9 +24,8 @@ Instructions (`op a n`): the operand is RF[a], or with `s` the hardware's value 
     LOAD a      ACC <- operand                  ADD a / SUB a   ACC <- ACC +/- operand
     HALF n      ACC <- ACC >> n (arithmetic)    NUM             LOW <- ACC, ACC <- 0
     DIV a n     the divisor RF[a] (below 2^31) taken on the first clock, then n steps of
-                non-restoring division: LOW <- the quotient of (LOW << (n - 32)) / RF[a];
-                ACC the remainder, or it less RF[a] (negative). Abortable: a step pending
-                stops it (the program goes to 0)
+                restoring division: LOW <- the quotient of (LOW << (n - 32)) / RF[a]; ACC
+                the remainder. Abortable: a step pending stops it (the program goes to 0)
     MUL a n     RF[a] taken on the first clock, then n steps of shift-and-add: ACC <-
                 LOW's top n bits times RF[a] (the product below 2^32)
     QUOT        ACC <- LOW, or 2^31 - 1 if the quotient needs more than 31 bits
@@ -182,16 +181,10 @@ class Engine:
             elif self.left == 0:               # the first clock takes the divisor
                 self.left, self.op, pc_next = ins.n, self.rd, self.pc
             else:
-                # Non-restoring: the remainder R (ACC, signed, -divisor <= R < divisor)
-                # shifted, less the divisor if R >= 0, plus it if not; the quotient bit
-                # is that the new remainder is not negative (the restoring division's
-                # bit: its remainder is R, or R + divisor when R < 0).
                 divisor = self.op
-                r = acc - (1 << WORD_BITS) if acc >> (WORD_BITS - 1) else acc
-                shifted = 2 * r + (low >> (WORD_BITS - 1))   # 33 bits, signed
-                r = shifted - divisor if r >= 0 else shifted + divisor
-                fits = r >= 0
-                acc = r & WORD_MASK
+                shifted = (acc << 1) | (low >> (WORD_BITS - 1))   # below 2 divisor < 2^32
+                fits = shifted >= divisor
+                acc = shifted - divisor if fits else shifted
                 # This step's quotient bit ends at bit left - 1 of LOW: 31 and above, the
                 # quotient does not fit in 31 bits.
                 if fits and self.left > WORD_BITS - 1:

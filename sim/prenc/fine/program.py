@@ -343,7 +343,7 @@ RESTART = next(k for k, row in enumerate(SOURCE) if row[0] == "RESTART")
 # operand of the instruction after it in the program (a special's number, or the
 # register file's address), which the RTL fetches while it runs.
 WORD_BITS = 29   # the adder's controls 4, op 4, special 1, abortable 1, a 5, n 8, next (s 1, a 5)
-ADDER_CONTROLS = {"step": ("DIV", "MUL"), "invert": ("SUB",), "mul": ("MUL",),
+ADDER_CONTROLS = {"step": ("DIV", "MUL"), "invert": ("SUB", "DIV"), "mul": ("MUL",),
                   "load": ("LOAD",)}
 
 
@@ -377,7 +377,7 @@ def rom_verilog(program=PROGRAM, source=SOURCE) -> str:
         "// prenc_velocity_program: prenc_velocity's program in block RAM, a word a clock:",
         "// {step, invert, mul, load, op[3:0], special, abortable, a[4:0], n[7:0], next_s,",
         "// next_a[4:0]} (prenc.fine.engine, prenc.fine.program; docs/fine.md). step, invert,",
-        "// mul, load: the adder's controls, decoded here (DIV or MUL; SUB; MUL; LOAD).",
+        "// mul, load: the adder's controls, decoded here (DIV or MUL; SUB or DIV; MUL; LOAD).",
         "// next_s, next_a: the operand of the instruction after it in the program (a special",
         "// and its number, or the register file's address).",
         "//",
