@@ -1,4 +1,3 @@
 // SPDX-License-Identifier: Apache-2.0
 // Sources of prenc_edge_capture (verilator -F <this file>), relative to this folder.
--F prenc_decoder_quarter.f
 prenc_edge_capture.v

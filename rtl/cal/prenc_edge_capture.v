@@ -3,9 +3,11 @@
 // between them, for a calibration run over the host link (docs/calibration.md).
 //
 // Each step of the quadrature decoder crosses an edge: clockwise into quarter q the
-// edge q, counter-clockwise into q the edge q + 1 (q from prenc_decoder_quarter). An
-// entry {pos_valid, direction, edge, interval} goes into a FIFO of DEPTH = 4 entries;
-// interval is the clocks since the step before, saturating at 65535.
+// edge q, counter-clockwise into q the edge q + 1. The core's pos_hyb follows its step
+// by POS_LAG = 4 clocks, so the block takes the step, its direction and an illegal
+// transition POS_LAG clocks late, when pos_hyb is q (and pos_valid says whether it is
+// valid). An entry {pos_valid, direction, edge, interval} goes into a FIFO of DEPTH = 4
+// entries; interval is the clocks since the step before, saturating at 65535.
 // The head of the FIFO is offered as a run: up to three entries in a row that are
 // consecutive edges one way with pos_valid (run 1 for any other head). `take` (the
 // host link's answer starts) removes the run. `lost` says that since the last take an
@@ -13,9 +15,9 @@
 // came: the record has a gap there, and the host starts it anew.
 // Model: prenc.cal.edge_capture.EdgeCapture.
 //
-// Latency: a step's entry is written into the FIFO on the clock after the step; the run
-// at the FIFO's head is on the outputs from the clock after it was written, until
-// `take` removes it.
+// Latency: a step's entry is written into the FIFO POS_LAG + 1 clocks after the step;
+// the run at the FIFO's head is on the outputs from the clock after it was written,
+// until `take` removes it.
 //
 // Parameters
 //   N   code word length, 2..24 (edges are N + 2 bits)
@@ -66,18 +68,15 @@ module prenc_edge_capture #(
   localparam integer EB = N + 2;          // an edge
   localparam integer WB = EB + 19;        // an entry: {continues, valid, cw, edge, interval}
 
-  wire [N+1:0] quarter;
+  // The step, its direction and an illegal transition, POS_LAG clocks late.
+  localparam integer POS_LAG = 4;
 
-  prenc_decoder_quarter #(
-    .N (N)
-  ) u_quarter (
-    .clk     (clk),
-    .rst     (rst),
-    .pos_hyb (pos_hyb),
-    .step    (step),
-    .step_cw (step_cw),
-    .quarter (quarter)
-  );
+  reg  [POS_LAG-1:0] step_d_reg;
+  reg  [POS_LAG-1:0] cw_d_reg;
+  reg  [POS_LAG-1:0] illegal_d_reg;
+  wire               step_late    = step_d_reg[POS_LAG-1];
+  wire               cw_late      = cw_d_reg[POS_LAG-1];
+  wire               illegal_late = illegal_d_reg[POS_LAG-1];
 
   // Stage 1: the step, registered with its quarter and interval.
   reg          step_reg;
@@ -144,13 +143,16 @@ module prenc_edge_capture #(
   end
 
   always @(posedge clk) begin
-    step_reg     <= step;
-    cw_reg       <= step_cw;
+    step_d_reg    <= {step_d_reg[POS_LAG-2:0], step};
+    cw_d_reg      <= {cw_d_reg[POS_LAG-2:0], step_cw};
+    illegal_d_reg <= {illegal_d_reg[POS_LAG-2:0], illegal};
+    step_reg     <= step_late;
+    cw_reg       <= cw_late;
     valid_reg    <= pos_valid;
-    illegal_reg  <= illegal;
-    quarter_reg  <= quarter;
+    illegal_reg  <= illegal_late;
+    quarter_reg  <= pos_hyb;
     interval_reg <= (since_reg == 16'hFFFF) ? 16'hFFFF : since_reg + 16'd1;
-    since_reg    <= step ? 16'd0 : (since_reg == 16'hFFFF) ? since_reg : since_reg + 16'd1;
+    since_reg    <= step_late ? 16'd0 : (since_reg == 16'hFFFF) ? since_reg : since_reg + 16'd1;
     e0_reg       <= s0;
     e1_reg       <= s1;
     e2_reg       <= s2;
@@ -163,6 +165,9 @@ module prenc_edge_capture #(
       last_valid_reg <= valid_reg;
     end
     if (rst) begin
+      step_d_reg     <= {POS_LAG{1'b0}};
+      cw_d_reg       <= {POS_LAG{1'b0}};
+      illegal_d_reg  <= {POS_LAG{1'b0}};
       step_reg       <= 1'b0;
       cw_reg         <= 1'b0;
       valid_reg      <= 1'b0;

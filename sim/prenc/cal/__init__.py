@@ -6,6 +6,5 @@
                      checks that the run was fit for it
     lookup           model of rtl/cal/prenc_cal_lookup.v: the table in block RAM, a
                      quarter's two corrections
-    decoder_quarter  model of rtl/cal/prenc_decoder_quarter.v: the decoder's quarter
     edge_capture     model of rtl/cal/prenc_edge_capture.v: the edges' timing for a run
 """

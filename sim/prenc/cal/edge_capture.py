@@ -3,11 +3,12 @@
 them, with the clocks between them, for a calibration run over the host link.
 
 Each decoder step crosses an edge (clockwise into quarter q: edge q; counter-clockwise:
-edge q + 1, q from the decoder's quarter). One clock after the step, an entry (pos_valid,
-cw, edge, interval) goes into a FIFO of DEPTH entries, interval the clocks since the
-step before (saturating at 65535), with a bit that says whether it continues the entry
-pushed before it (the next edge the same way, both with pos_valid). The head is
-offered as a run: it and the entries that continue it, up to 3; `take` removes it.
+edge q + 1). pos_hyb follows the step by POS_LAG clocks, so the step, its direction and
+an illegal transition are taken POS_LAG clocks late, when pos_hyb is q. One clock after
+that, an entry (pos_valid, cw, edge, interval) goes into a FIFO of DEPTH entries,
+interval the clocks since the step before (saturating at 65535), with a bit that says
+whether it continues the entry pushed before it (the next edge the same way, both with
+pos_valid). The head is offered as a run: it and the entries that continue it, up to 3; `take` removes it.
 `lost`: an entry found the FIFO full, or an illegal transition came (a clock before),
 since the last take."""
 
@@ -15,9 +16,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .decoder_quarter import DecoderQuarter
-
 DEPTH = 4
+POS_LAG = 4   # clocks from the core's step to its pos_hyb
 SATURATED = 0xFFFF
 
 
@@ -33,7 +33,6 @@ class Entry:
 class EdgeCapture:
     def __init__(self, n: int):
         self.size = 4 << n
-        self.quarter = DecoderQuarter(n)
         self.reset()
 
     def reset(self) -> None:
@@ -42,7 +41,7 @@ class EdgeCapture:
         self.fifo: list[Entry] = []
         self.lost = 0
         self.last = (0, 0, 0)              # the last entry pushed: edge, cw, valid
-        self.quarter.reset()
+        self.late = [(0, 0, 0)] * POS_LAG  # step, cw, illegal of the clocks before, newest first
 
     def run(self) -> list[Entry]:
         """The run at the head (what the outputs show)."""
@@ -72,9 +71,9 @@ class EdgeCapture:
             self.last = (edge, s_cw, s_valid)
         self.lost = int((self.lost and not take) or s_illegal or (s_step and full))
         self.fifo = fifo
-        # Stage 1: this cycle's step.
+        # Stage 1: the step of POS_LAG clocks ago, with this cycle's pos_hyb.
+        l_step, l_cw, l_illegal = self.late[-1]
         interval = SATURATED if self.since == SATURATED else self.since + 1
-        self.stage = (int(step), int(step_cw), int(pos_valid), int(illegal),
-                      self.quarter.quarter(pos_hyb, step, step_cw), interval)
-        self.since = 0 if step else min(self.since + 1, SATURATED)
-        self.quarter.clock(step, step_cw)
+        self.stage = (l_step, l_cw, int(pos_valid), l_illegal, pos_hyb % self.size, interval)
+        self.since = 0 if l_step else min(self.since + 1, SATURATED)
+        self.late = [(int(step), int(step_cw), int(illegal))] + self.late[:-1]

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""prenc_edge_capture (with prenc_decoder_quarter) against prenc.cal.edge_capture,
+"""prenc_edge_capture against prenc.cal.edge_capture,
 clock by clock, and against the disc: the edges a steady turn's record holds are the
 ones the disc crossed, and their intervals the clocks between the crossings.
 
