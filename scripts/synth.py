@@ -14,7 +14,9 @@ Steps, every tool from PyPI (YoWASP builds, installed by the Makefile):
 2. Yosys `synth_ice40` / `synth_ecp5` to a JSON netlist (`check -assert`: no latch,
    no driver conflict);
 3. nextpnr with the board's pin constraints and the clock's target frequency, which
-   writes a JSON report (utilization, achieved Fmax per clock);
+   writes a JSON report (utilization, achieved Fmax per clock); a board is placed with
+   the placer seeds of BOARD_SEEDS in turn until one meets timing (Fmax moves by about
+   +-5 % with the seed, and a full UP5K more), and the report names the seed;
 4. icepack / ecppack to the bitstream;
 5. `report.md` and `report.json` beside the bitstream: logic cells, flip-flops, block
    RAMs, and each clock's Fmax against its constraint.
@@ -93,6 +95,10 @@ BOARDS = {
 }
 
 
+# A board build tries these nextpnr placer seeds in order, until one meets timing.
+BOARD_SEEDS = (1, 2, 3, 4)
+
+
 class FlowError(RuntimeError):
     """A step of the flow failed; the message is one line."""
 
@@ -108,6 +114,7 @@ class Result:
     critical_path: list[str] = field(default_factory=list)
     bitstream: str | None = None
     seconds: float = 0.0
+    seed: int = 1  # the placer seed of the placement kept
 
     @property
     def fmax(self) -> float | None:
@@ -219,8 +226,10 @@ def synthesize(top: str, sources: list[Path], target_name: str, parameters: dict
 
 def build(top: str, sources: list[Path], target_name: str, parameters: dict[str, object], freq_mhz: float,
           out: Path, pins: Path | None = None, bitstream: bool = True, seed: int = 1,
-          require_timing: bool = True) -> Result:
-    """Synthesize, place and route `top`; raise FlowError on any failure, including timing."""
+          require_timing: bool = True, seeds: tuple[int, ...] | None = None) -> Result:
+    """Synthesize, place and route `top`; raise FlowError on any failure, including timing.
+    With `seeds`, the placement is tried with each placer seed in turn until one meets
+    timing (else with `seed`)."""
     target = TARGETS[target_name]
     t0 = time.perf_counter()
     result = Result(top=top, target=target_name, bits=int(parameters.get("N", 10)))
@@ -229,9 +238,47 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
         for cell, n in module.get("num_cells_by_type", {}).items():
             result.cells[cell] = result.cells.get(cell, 0) + int(n)
 
+    reached = []  # (seed, the worst clock's name, achieved, constraint) of each failed placement
+    for placer_seed in seeds or (seed,):
+        result.seed = placer_seed
+        placed = place(top, target, netlist, freq_mhz, out, pins, result, require_timing)
+        if not require_timing or result.timing_met:
+            break
+        if not result.clocks:
+            raise FlowError(f"nextpnr reported no clock for {top} (log: {rel(out / 'nextpnr.log')})")
+        name, clock = min(result.clocks.items(), key=lambda kv: kv[1]["achieved"] - kv[1]["constraint"])
+        reached.append((result.seed, name, clock["achieved"], clock["constraint"]))
+    else:
+        if len(reached) == 1:
+            _, name, achieved, constraint = reached[0]
+            raise FlowError(f"timing failed: clock {name} reached {achieved:.1f} MHz, needs {constraint:.1f} MHz")
+        tried = ", ".join(f"{a:.1f} (seed {s})" for s, _, a, _ in reached)
+        raise FlowError(f"timing failed: clock {reached[0][1]} reached {tried} MHz, needs {reached[0][3]:.1f} MHz")
+    if bitstream:
+        if target.family == "ice40":
+            image = out / f"{top}.bin"
+            _run("icepack", [str(BIN / "yowasp-icepack"), rel(placed), rel(image)], out / "icepack.log")
+        else:
+            image = out / f"{top}.bit"
+            _run("ecppack", [str(BIN / "yowasp-ecppack"), "--compress", rel(placed), rel(image)],
+                 out / "ecppack.log")
+        result.bitstream = rel(image)
+    result.seconds = time.perf_counter() - t0
+    return result
+
+
+def place(top: str, target: Target, netlist: Path, freq_mhz: float, out: Path, pins: Path | None,
+          result: Result, require_timing: bool) -> Path:
+    """nextpnr with placer seed result.seed; its report read into `result` (clocks,
+    utilization, critical path). Returns the placed design's file. A tool error raises
+    FlowError; a missed timing does not (the caller decides)."""
     report = out / "nextpnr.json"
+    report.unlink(missing_ok=True)
+    result.clocks.clear()
+    result.utilization.clear()
+    result.critical_path = []
     cmd = [str(BIN / f"yowasp-nextpnr-{target.family}"), *target.device_args, "--json", rel(netlist),
-           "--freq", f"{freq_mhz:g}", "--report", rel(report), "--seed", str(seed)]
+           "--freq", f"{freq_mhz:g}", "--report", rel(report), "--seed", str(result.seed)]
     if not require_timing:
         cmd.append("--timing-allow-fail")
     if target.family == "ice40":
@@ -249,23 +296,7 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
         _read_report(json.loads(report.read_text()), result)
     if failure is not None and not (result.clocks and not result.timing_met):
         raise failure
-    if require_timing and not result.timing_met:
-        worst = min(result.clocks.items(), key=lambda kv: kv[1]["achieved"] - kv[1]["constraint"], default=None)
-        if worst is None:
-            raise FlowError(f"nextpnr reported no clock for {top} (log: {rel(out / 'nextpnr.log')})")
-        raise FlowError(f"timing failed: clock {worst[0]} reached {worst[1]['achieved']:.1f} MHz, "
-                        f"needs {worst[1]['constraint']:.1f} MHz")
-    if bitstream:
-        if target.family == "ice40":
-            image = out / f"{top}.bin"
-            _run("icepack", [str(BIN / "yowasp-icepack"), rel(placed), rel(image)], out / "icepack.log")
-        else:
-            image = out / f"{top}.bit"
-            _run("ecppack", [str(BIN / "yowasp-ecppack"), "--compress", rel(placed), rel(image)],
-                 out / "ecppack.log")
-        result.bitstream = rel(image)
-    result.seconds = time.perf_counter() - t0
-    return result
+    return placed
 
 
 def _read_report(report: dict, result: Result) -> None:
@@ -292,6 +323,7 @@ def summary(result: Result) -> str:
         lines.append(f"  clock {name}: Fmax {c['achieved']:.1f} MHz, constraint {c['constraint']:.1f} MHz, {verdict}")
     if result.critical_path:
         lines.append(f"  critical path: {result.critical_path[0]} -> {result.critical_path[1]}")
+    lines.append(f"  nextpnr placer seed {result.seed}")
     if result.bitstream:
         lines.append(f"  bitstream: {result.bitstream}")
     return "\n".join(lines)
@@ -334,7 +366,8 @@ def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
                 cal: str | None = None) -> Result:
     params = board_parameters(board, bits, out, baud, cal)
     sources = file_list(board.folder / f"{board.top}.f")
-    return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins)
+    return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins,
+                 seeds=BOARD_SEEDS)
 
 
 def check_taps(bits: int) -> tuple[int, ...]:

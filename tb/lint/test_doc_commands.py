@@ -32,6 +32,8 @@ COVERED = [
      ["def test_board_builds_and_meets_timing", "synth.BOARDS", "board_build"]),
     (r"make synth BOARD=ulx3s CAL=1", "tb/lint/test_boards.py",
      ["def test_the_ulx3s_with_the_calibration_table_meets_its_clock", 'cal="1"']),
+    (r"make synth BOARD=icebreaker CAL=1", "tb/lint/test_boards.py",
+     ["def test_the_icebreaker_with_the_calibration_table_meets_its_clock", 'cal="1"']),
     (r"\.venv/bin/python scripts/synth\.py --core ice40-hx8k", "tb/lint/test_boards.py", ['"--core"', "ice40-hx8k"]),
     (r"\.venv/bin/python scripts/synth\.py --core ice40-up5k --top prenc_core_harness", "tb/lint/test_boards.py",
      ["ice40-up5k", "prenc_core_harness"]),
