@@ -2,7 +2,8 @@
 """The velocity of prenc 0.11.0's default (prenc_velocity before 0.12.0: full-cycle
 windows, the constant-speed test and the fit), kept as a baseline for `make bench`'s
 section 9, so that the design that replaced it is measured beside it in the same run.
-No RTL of it is left; prenc.virtual.fine_bench.previous_velocity runs it.
+No RTL of it is left; prenc.virtual.fine_bench.previous_velocity runs it. Only that
+configuration is kept (0.11's options QUARTER_WINDOWS, ACCEL_FIT = 0 and CAL are not).
 
 It was the model of rtl/fine/prenc_velocity.v: velocity and acceleration from the sync track's
 edge timing.
@@ -32,22 +33,6 @@ The estimator, on the quadrature decoder's registered step:
   FULL_CLOCKS being how long the computation takes, so that the velocity is that of
   the cycle it is loaded in. Otherwise the mean over both, accel 0. Between updates
   the velocity integrates `accel`.
-- Quarter windows (quarter_windows = 1), for a disc whose edges are where they should
-  be (an accurate disc, or a printed one with its calibration table; on a printed disc
-  without one, the A/B phase and duty errors enter every window):
-  - a window closes on a step over any edge, at least WINDOW clocks after A;
-  - the run: what is before the closing window is the run of windows that passed
-    the constant-speed test together (less than 2^15 quarters and 2^(TIMER_BITS - 1)
-    clocks; the last window alone after any other update). A
-    window that passes joins it, and the velocity is the mean over the whole run,
-    whose quantization shrinks as it grows;
-  - a test failed by BIG (16) times its bound or more is an acceleration at once:
-    the fit, with the run as the older anchor; a smaller failure fits if the update
-    before failed with the same sign, and else shows the window's own mean (the run
-    is stale): n1 / P1, accel 0.
-- Without the fit (accel_fit = 0, prenc_velocity's ACCEL_FIT, for a small FPGA): no
-  test and no multiplier; every close after another window loads the mean over both,
-  accel 0, DIV_CLOCKS + 2 cycles after the step (the sums, then the division).
 - Before the first window closes (after reset, a stop or an illegal transition): on
   each step, the mean velocity since A, accel 0.
 - A reversal (a step against the last step's direction) restarts the windows; the
@@ -58,22 +43,13 @@ The estimator, on the quadrature decoder's registered step:
   it there, acceleration kept, for the reversal that should follow; a step the same
   way instead means the acceleration was wrong (it is dropped, the means restart);
   no step for 4 times as long as it took to reach 0 is a stop.
-- Overdue: once the velocity predicts 1.5 quarters of travel since the last step (with
-  a calibration table: half a quarter past the quarter's true width, 1 to 1.875
-  quarters) and no step came,
+- Overdue: once the velocity predicts 1.5 quarters of travel since the last step and
+  no step came,
   the disc is slower than estimated: accel becomes -3 v / E (E the clocks since the
   step), which brings the velocity to 0 at 2 predicted quarter periods, and that is a
   stop. No step for 2^TIMER_BITS - 1 clocks: a stop too. A stop reads 0 (valid).
 - An illegal transition (a missed state) drops the velocity: `valid` 0 until the next
   estimate.
-
-With a calibration table (cal_bits = 12; issue 38, docs/calibration.md), a window's
-length is the distance between its edges' true places, in 2^-12 quarters: n + c(end)
-- c(start) clockwise, from the corrections `c_lo` and `c_hi` of the decoder's
-quarter's edges. The arithmetic is the same with 12 more bits in the products (a fit
-takes 24 clocks longer): prenc_velocity with CAL = 1. The edge is overdue half a quarter
-past the quarter's true width (a registered level, from the corrections of the clock
-before). prenc.fine.fine.Fine gives it the corrections, as prenc_fine does.
 
 One serial divider (a quotient bit per clock) and one serial multiplier (a bit of the
 multiplier per clock) do the arithmetic, so an update takes FULL_CLOCKS; a step that
@@ -91,15 +67,13 @@ COUNT_BITS = 16            # edge positions, in quarters, modulo 2^COUNT_BITS
 LEAD_LIMIT = 2 << FRAC     # the predicted travel since the last step saturates at 2 quarters
 OVERDUE = 3 << (FRAC - 1)  # 1.5 quarters
 DIV_CLOCKS = QUOTIENT_BITS + 2   # from a division's start cycle to its done cycle
-BIG = 16                   # quarter windows: a constant-speed test failed by BIG times its
-                           # bound fits an acceleration at once
 
 
-def full_clocks(timer_bits: int, cal_bits: int = 0) -> int:
+def full_clocks(timer_bits: int) -> int:
     """Cycles from a window's closing step to the cycle the fitted velocity shows: two
-    products of COUNT_BITS + cal_bits bits, the test, three divisions, the difference, a
-    product of TIMER_BITS + 1 bits, the sum."""
-    return 2 * (COUNT_BITS + cal_bits) + 3 * DIV_CLOCKS + timer_bits + 8
+    products of COUNT_BITS bits, the test, three divisions, the difference, a product of
+    TIMER_BITS + 1 bits, the sum."""
+    return 2 * COUNT_BITS + 3 * DIV_CLOCKS + timer_bits + 8
 
 
 def saturate(value: int, bits: int) -> int:
@@ -113,7 +87,7 @@ def _sign(value: int) -> int:
 
 
 class Divider:
-    """Model of rtl/fine/prenc_divider.v: floor(num / den), a quotient bit per clock.
+    """0.11's prenc_divider: floor(num / den), a quotient bit per clock.
     A start in cycle k gives `done` for one cycle in cycle k + DIV_CLOCKS (it registers
     its operands, checks for saturation, then takes a bit a clock); a quotient
     that needs more than QUOTIENT_BITS bits (or den = 0) saturates to all ones; `cancel`
@@ -147,30 +121,17 @@ class Velocity:
     cycle's edge."""
 
     (IDLE, MEAN, CROSS1, CROSS2, DECIDE, CONSTANT, FIT_V01, FIT_V12, FIT_D, FIT_A, FIT_MUL,
-     FIT_LOAD, DECAY, SUMS) = range(14)
+     FIT_LOAD, DECAY) = range(13)
 
-    def __init__(self, window: int = 2048, timer_bits: int = 26, cal_bits: int = 0,
-                 quarter_windows: int = 0, accel_fit: int = 1):
-        if quarter_windows not in (0, 1):
-            raise ValueError(f"quarter_windows = {quarter_windows} must be 0 or 1")
-        if accel_fit not in (0, 1):
-            raise ValueError(f"accel_fit = {accel_fit} must be 0 or 1")
-        if not accel_fit and quarter_windows:
-            raise ValueError("accel_fit = 0 needs quarter_windows = 0 (runs need the test)")
+    def __init__(self, window: int = 2048, timer_bits: int = 26):
         if not 12 <= timer_bits <= 32:
             raise ValueError(f"timer_bits = {timer_bits} is out of range 12..32")
         if not 16 <= window < (1 << (timer_bits - 1)):
             raise ValueError(f"window = {window} is out of range 16..2^(timer_bits-1)-1")
-        if cal_bits not in (0, 12):
-            raise ValueError(f"cal_bits = {cal_bits}: 0 (no calibration table) or 12")
         self.window = window
         self.timer_bits = timer_bits
-        self.cal_bits = cal_bits
-        self.quarter_windows = quarter_windows
-        self.accel_fit = accel_fit
-        self.mul_bits = COUNT_BITS + cal_bits
         self.timer_max = (1 << timer_bits) - 1
-        self.full_clocks = full_clocks(timer_bits, cal_bits)
+        self.full_clocks = full_clocks(timer_bits)
         self.reset()
 
     def reset(self) -> None:
@@ -184,11 +145,9 @@ class Velocity:
         self.zero_at = 0        # clocks from the last step to that zero
         self.moved = 0          # a step since reset, a stop or an illegal transition
         self.since_step = 0     # clocks since the last step (saturating)
-        self.overdue_level = OVERDUE   # the lead at which an edge is overdue (registered)
         self.lead = 0           # predicted travel since the last step, FRAC bits
         self.have_a = 0         # anchor A: the step that opened the current window
         self.x_a = 0
-        self.c_a = 0            # the correction of A's edge (calibration table)
         self.since_a = 0
         self.have_prev = 0      # the run before: its quarters and clocks
         self.prev_n = 0
@@ -217,15 +176,7 @@ class Velocity:
         self.multiplier, self.multiplicand, self.mul_left = multiplier, multiplicand, bits
         self.product, self.state = 0, state
 
-    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0,
-              c_lo: int = 0, c_hi: int = 0) -> None:
-        """c_lo, c_hi: with a calibration table (cal_bits = 12), the corrections of the
-        edges of the quarter the decoder is in (after this cycle's step), in 2^-cal_bits
-        quarters: the quarter really spans [c_lo, 1 + c_hi) past its nominal start. A
-        clockwise step crossed its lower edge, a counter-clockwise one its upper edge."""
-        if not self.cal_bits:
-            c_lo = c_hi = 0
-        step_c = c_lo if step_cw else c_hi
+    def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0) -> None:
         if rst:
             self.reset()
             return
@@ -269,41 +220,28 @@ class Velocity:
             self.state = self.IDLE
         elif state == self.CROSS1 and mul_done:
             self.cross = self.product
-            self._multiply(self.n2, self.p1, self.mul_bits, self.CROSS2)
+            self._multiply(self.n2, self.p1, COUNT_BITS, self.CROSS2)
         elif state == self.CROSS2 and mul_done:
             self.diff = self.cross - self.product
             self.state = self.DECIDE
-        elif state == self.SUMS:   # accel_fit = 0: the sums registered, then the mean
-            self.state = self.DECIDE
         elif state == self.DECIDE:
             diff = self.diff
-            constant = not self.accel_fit or -(self.n1 + self.n2) < diff < self.n1 + self.n2
-            # An acceleration that lasts: the test failed twice with the same sign, or
-            # (quarter windows) by BIG times its bound or more.
-            big = self.quarter_windows and not -BIG * (self.n1 + self.n2) < diff < BIG * (self.n1 + self.n2)
-            lasting = big or (int(diff < 0) == self.last_negative and self.last_fit)
+            constant = -(self.n1 + self.n2) < diff < self.n1 + self.n2
+            # An acceleration that lasts: the test failed twice with the same sign.
+            lasting = int(diff < 0) == self.last_negative and self.last_fit
             self.last_negative, self.last_fit = int(diff < 0), int(not constant)
             if constant or not lasting:
                 self.state = self.CONSTANT
-                if self.quarter_windows and not constant:
-                    # Quarter windows, one failed test: the run is stale; the window's own mean.
-                    start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
-                else:
-                    start, num, den = 1, (self.n1 + self.n2) << (FRAC - self.cal_bits), self.p1 + self.p2
-                # Quarter windows: the window joins the run (the close made it the run
-                # alone), unless the run would grow too long.
-                if self.quarter_windows and constant and self.n1 + self.n2 < (1 << (self.mul_bits - 1)) \
-                        and self.p1 + self.p2 < (1 << (self.timer_bits - 1)):
-                    self.prev_n, self.prev_clocks = self.n1 + self.n2, self.p1 + self.p2
+                start, num, den = 1, (self.n1 + self.n2) << FRAC, self.p1 + self.p2
             else:
-                start, num, den = 1, self.n1 << (FRAC - self.cal_bits), self.p1
+                start, num, den = 1, self.n1 << FRAC, self.p1
                 self.state = self.FIT_V01
         elif state == self.CONSTANT and div_done:
             v_n, self.accel, self.valid = self.sign * quotient, 0, 1
             self.state = self.IDLE
         elif state == self.FIT_V01 and div_done:
             self.v01 = quotient
-            start, num, den = 1, self.n2 << (FRAC - self.cal_bits), self.p2
+            start, num, den = 1, self.n2 << FRAC, self.p2
             self.state = self.FIT_V12
         elif state == self.FIT_V12 and div_done:
             self.d = self.v01 - quotient
@@ -331,7 +269,7 @@ class Velocity:
             self.state = self.IDLE
 
         if idle and not self.decaying and not step and not illegal and velocity != 0 \
-                and abs(self.lead) >= self.overdue_level:
+                and abs(self.lead) >= OVERDUE:
             # Overdue: decay to 0 over a third of the time since the step.
             self.sign = _sign(velocity)
             start, num, den = 1, 3 * abs(velocity), self.since_step
@@ -366,9 +304,6 @@ class Velocity:
                 if self.state == self.DECAY:
                     cancel, start, self.state = 1, 0, self.IDLE
             n = abs(((x - self.x_a + (1 << (COUNT_BITS - 1))) & mask) - (1 << (COUNT_BITS - 1)))
-            # The window's length in 2^-cal_bits quarters: its edges' true places (the
-            # table's corrections; step_c is the crossed edge's), at least one LSB.
-            n_cal = max(1, (n << self.cal_bits) + (step_c - self.c_a if step_cw else self.c_a - step_c))
             speed = abs(velocity)   # as the cycle began (one carry chain less in the RTL)
             if reversal:
                 # The same edge crossed back at the speed it was crossed at; accel and the
@@ -377,35 +312,27 @@ class Velocity:
                 v_n = speed if step_cw else -speed
                 self.have_prev = 0
                 self.last_negative = last_negative0 ^ 1
-                self.have_a, self.x_a, self.c_a, since_a_n = 1, x, step_c, 1
+                self.have_a, self.x_a, since_a_n = 1, x, 1
                 cancel, start, self.state = 1, 0, self.IDLE
             elif not self.have_a or self.since_a == self.timer_max:
                 self.have_prev = self.last_fit = 0
-                self.have_a, self.x_a, self.c_a, since_a_n = 1, x, step_c, 1
+                self.have_a, self.x_a, since_a_n = 1, x, 1
             elif idle:
-                closes = ((n & 3) == 0 or self.quarter_windows) and self.since_a >= self.window
+                closes = (n & 3) == 0 and self.since_a >= self.window
                 self.sign = 1 if step_cw else -1
                 if closes and self.have_prev:
-                    self.n1, self.p1, self.n2, self.p2 = n_cal, self.since_a, self.prev_n, self.prev_clocks
-                    if self.accel_fit:
-                        self._multiply(n_cal, self.prev_clocks, self.mul_bits, self.CROSS1)
-                    else:
-                        self.state = self.SUMS
+                    self.n1, self.p1, self.n2, self.p2 = n, self.since_a, self.prev_n, self.prev_clocks
+                    self._multiply(n, self.prev_clocks, COUNT_BITS, self.CROSS1)
                 elif (closes or not self.have_prev) and accel0 == 0 and not held0:
                     # The mean since A, unless an acceleration is known (after a reversal):
                     # then the velocity integrates it until a fit.
-                    start, num, den, cancel = 1, n_cal << (FRAC - self.cal_bits), self.since_a, 0
+                    start, num, den, cancel = 1, n << FRAC, self.since_a, 0
                     self.state = self.MEAN
                 if closes:
-                    self.have_prev, self.prev_n, self.prev_clocks = 1, n_cal, self.since_a
-                    self.x_a, self.c_a, since_a_n = x, step_c, 1
+                    self.have_prev, self.prev_n, self.prev_clocks = 1, n, self.since_a
+                    self.x_a, since_a_n = x, 1
             self.step_speed = speed
 
         self.div.clock(start, num, den, cancel)
-        # Overdue from the next clock on: 1.5 quarters, or half a quarter past the
-        # quarter's true width (from 1 to 1.875 quarters: the lead saturates at 2).
-        extra = max(-(1 << (self.cal_bits - 1)), min(3 << (self.cal_bits - 3), c_hi - c_lo)) \
-            if self.cal_bits else 0
-        self.overdue_level = OVERDUE + (extra << (FRAC - self.cal_bits))
         self.velocity = v_n
         self.since_step, self.since_a, self.lead = since_step_n, since_a_n, lead_n
