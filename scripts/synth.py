@@ -225,11 +225,10 @@ def synthesize(top: str, sources: list[Path], target_name: str, parameters: dict
 
 
 def build(top: str, sources: list[Path], target_name: str, parameters: dict[str, object], freq_mhz: float,
-          out: Path, pins: Path | None = None, bitstream: bool = True, seed: int = 1,
-          require_timing: bool = True, seeds: tuple[int, ...] | None = None) -> Result:
+          out: Path, pins: Path | None = None, bitstream: bool = True, seeds: tuple[int, ...] = (1,),
+          require_timing: bool = True) -> Result:
     """Synthesize, place and route `top`; raise FlowError on any failure, including timing.
-    With `seeds`, the placement is tried with each placer seed in turn until one meets
-    timing (else with `seed`)."""
+    The placement is tried with each placer seed of `seeds` in turn until one meets timing."""
     target = TARGETS[target_name]
     t0 = time.perf_counter()
     result = Result(top=top, target=target_name, bits=int(parameters.get("N", 10)))
@@ -239,7 +238,7 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
             result.cells[cell] = result.cells.get(cell, 0) + int(n)
 
     reached = []  # (seed, the worst clock's name, achieved, constraint) of each failed placement
-    for placer_seed in seeds or (seed,):
+    for placer_seed in seeds:
         result.seed = placer_seed
         placed = place(top, target, netlist, freq_mhz, out, pins, result, require_timing)
         if not require_timing or result.timing_met:
@@ -412,7 +411,7 @@ def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timin
     rom = rom_for(bits, out)
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom, **(parameters or {})}
     return build(top, sources or file_list(list_file(top)), target, params, freq_mhz, out, bitstream=False,
-                 require_timing=require_timing, seed=seed)
+                 require_timing=require_timing, seeds=(seed,))
 
 
 def matrix_build(n: int, target: str, freq_mhz: float, out: Path, table: str = "generator",
