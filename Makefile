@@ -100,7 +100,7 @@ lint: $(STAMP)
 	done
 
 synth: $(STAMP)
-	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD)) $(if $(CAL),--cal $(CAL))
+	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD)) $(if $(CAL),--cal $(CAL)) $(foreach p,$(PARAMS),--param $(p))
 
 formal: $(STAMP)
 	@$(PY) -m pytest -q -n $(JOBS) tb/formal

@@ -361,9 +361,24 @@ def board_parameters(board: Board, bits: int, out: Path, baud: int | None = None
     return params
 
 
+def top_parameters(board: Board) -> set[str]:
+    """The names of the board top's parameters, from its source."""
+    text = (board.folder / f"{board.top}.v").read_text()
+    return set(re.findall(r"parameter\s+(?:integer\s+|\[[^\]]*\]\s*)?(\w+)\s*=", text))
+
+
+def board_settable(board: Board) -> set[str]:
+    """The board top's parameters that --param may set (the rest have their own options)."""
+    return top_parameters(board) - {"N", "TAPS", "ROM_FILE", "BAUD", "CAL", "CAL_FILE"}
+
+
 def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
-                cal: str | None = None) -> Result:
+                cal: str | None = None, extra: dict[str, int] | None = None) -> Result:
     params = board_parameters(board, bits, out, baud, cal)
+    unknown = set(extra or {}) - board_settable(board)
+    if unknown:
+        raise FlowError(f"--param {', '.join(sorted(unknown))}: not a parameter of {board.top}")
+    params.update(extra or {})
     sources = file_list(board.folder / f"{board.top}.f")
     return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins,
                  seeds=BOARD_SEEDS)
@@ -455,7 +470,8 @@ def main(argv: list[str] | None = None) -> int:
                              "(prenc_core_harness, for the UP5K), on its Wishbone bus (prenc_wb), or that with "
                              "an LFSR for bus master and one pin out (prenc_wb_harness, for the UP5K)")
     parser.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
-                        help="with --core: set another integer parameter of the top (e.g. HYPOTHESES=0)")
+                        help="set another integer parameter of the top (e.g. HYPOTHESES=0 with --core; "
+                             "BISS_ST_BITS=23 with --board)")
     parser.add_argument("--seeds", default="1", metavar="S[,S...]",
                         help="with --core: nextpnr placer seeds (default 1); with several, each is placed in "
                              "<out>/seed<S> and the mean Fmax is printed (Fmax moves by +-5 %% with the seed)")
@@ -466,8 +482,10 @@ def main(argv: list[str] | None = None) -> int:
         seeds = placer_seeds(args.seeds)
     except ValueError as err:
         parser.error(str(err))
-    if extra and not args.core:
-        parser.error("--param goes with --core")
+    if args.board and set(extra) - board_settable(BOARDS[args.board]):
+        parser.error(f"--param {', '.join(sorted(set(extra) - board_settable(BOARDS[args.board])))}: "
+                     f"{BOARDS[args.board].top} has no such parameter to set (it has "
+                     f"{', '.join(sorted(board_settable(BOARDS[args.board])))})")
     if args.cal and not args.board:
         parser.error("--cal goes with --board")
     if seeds != [1] and not args.core:
@@ -485,7 +503,7 @@ def main(argv: list[str] | None = None) -> int:
         where = out / f"seed{seed}" if sweep else out
         try:
             if args.board:
-                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal)
+                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal, extra)
             else:
                 result = core_build(args.core, args.bits, args.freq, where, top=args.top, parameters=extra,
                                     seed=seed, require_timing=not sweep)

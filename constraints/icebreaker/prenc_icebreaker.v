@@ -9,15 +9,23 @@
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
 //   PMOD1B: P1B1 BiSS-C MA in (pulled up), P1B2 BiSS-C SLO out (through RS-422
 //           transceivers to the drive: docs/biss-c.md)
+//           P1B7 SPI CSn in (pulled up), P1B8 SCLK in, P1B9 MOSI in (pulled up: a drive
+//           that has no MOSI reads ANGLECOM), P1B10 MISO out (high impedance while CSn
+//           is high: docs/interfaces/as5047.md)
+//           P1B3 A, P1B4 B out, P1A10 I out (ABI: docs/interfaces/abi-uvw.md)
 //   UART:   RX pin 6, TX pin 9, to the on-board FTDI (second interface)
 //   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
+//   No UVW: the UP5K has no pins for it beside the LEDs, nor room (97 % full with it).
+//   With CAL = 1 neither SPI nor ABI: the table and the edges' capture take their room.
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board. The UP5K's 30 block
 // RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity;
 // 0: not built (SSI and BiSS-C send pos_hyb). CAL (1, with FINE = 1): the calibration
 // table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
-// in from CAL_FILE.
+// in from CAL_FILE. FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
+// SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS: prenc_board's (make synth
+// PARAMS="NAME=VALUE ...").
 
 `resetall
 `timescale 1ns / 1ps
@@ -31,7 +39,16 @@ module prenc_icebreaker #(
   parameter integer BAUD     = 115200,
   parameter integer FINE     = 1,
   parameter integer CAL      = 0,
-  parameter         CAL_FILE = ""
+  parameter         CAL_FILE = "",
+  parameter integer FINE_BITS       = 0,
+  parameter integer BISS_MT_BITS    = 12,
+  parameter integer BISS_ST_BITS    = 0,
+  parameter integer BISS_ERROR_HIGH = 0,
+  parameter integer SPI_ZERO        = 0,
+  parameter integer SPI_SETTINGS1   = 1,
+  parameter integer SPI_SETTINGS2   = 0,
+  parameter integer ABI_STEPS       = 0,
+  parameter integer ABI_EDGE_NS     = 250
 ) (
   input  wire CLK,
   input  wire BTN_N,
@@ -46,6 +63,13 @@ module prenc_icebreaker #(
   input  wire P1A9,
   input  wire P1B1,
   output wire P1B2,
+  input  wire P1B7,
+  input  wire P1B8,
+  input  wire P1B9,
+  output wire P1B10,
+  output wire P1B3,
+  output wire P1B4,
+  output wire P1A10,
   output wire LEDR_N,
   output wire LEDG_N,
   output wire LED1,
@@ -56,6 +80,8 @@ module prenc_icebreaker #(
 );
 
   localparam integer CLK_HZ = 30000000;
+  // With the calibration table the UP5K has no room for the drives' SPI and ABI.
+  localparam integer DRIVES = (CAL == 1) ? 0 : 1;
 
   wire clk;
   wire locked;
@@ -94,6 +120,11 @@ module prenc_icebreaker #(
   wire       led_reduced;
   wire       led_incremental;
   wire       led_acquire;
+  wire       spi_miso;
+  wire       spi_miso_oe;
+  wire       uvw_u;          // UVW = 0: not built
+  wire       uvw_v;
+  wire       uvw_w;
 
   prenc_board #(
     .N        (N),
@@ -105,7 +136,19 @@ module prenc_icebreaker #(
     .FINE         (FINE),
     .EDGE_CAPTURE (CAL),
     .CAL          (CAL),
-    .CAL_FILE     (CAL_FILE)
+    .CAL_FILE     (CAL_FILE),
+    .FINE_BITS       (FINE_BITS),
+    .BISS_MT_BITS    (BISS_MT_BITS),
+    .BISS_ST_BITS    (BISS_ST_BITS),
+    .BISS_ERROR_HIGH (BISS_ERROR_HIGH),
+    .SPI_ZERO        (SPI_ZERO),
+    .SPI_SETTINGS1   (SPI_SETTINGS1),
+    .SPI_SETTINGS2   (SPI_SETTINGS2),
+    .ABI_STEPS       (ABI_STEPS),
+    .ABI_EDGE_NS     (ABI_EDGE_NS),
+    .SPI             (DRIVES),
+    .ABI             (DRIVES),
+    .UVW             (0)
   ) u_board (
     .clk             (clk),
     .rst             (rst),
@@ -120,6 +163,17 @@ module prenc_icebreaker #(
     .ssi_gray        (P1A9),
     .biss_ma         (P1B1),
     .biss_slo        (P1B2),
+    .spi_csn         (P1B7),
+    .spi_sclk        (P1B8),
+    .spi_mosi        (P1B9),
+    .spi_miso        (spi_miso),
+    .spi_miso_oe     (spi_miso_oe),
+    .abi_a           (P1B3),
+    .abi_b           (P1B4),
+    .abi_i           (P1A10),
+    .uvw_u           (uvw_u),
+    .uvw_v           (uvw_v),
+    .uvw_w           (uvw_w),
     .led_valid       (led_valid),
     .led_normal      (led_normal),
     .led_reduced     (led_reduced),
@@ -127,6 +181,15 @@ module prenc_icebreaker #(
     .led_acquire     (led_acquire),
     .pos_valid       (pos_valid),
     .mode            (mode)
+  );
+
+  // MISO: a tristate output, driven while the SPI's CSn is low.
+  SB_IO #(
+    .PIN_TYPE (6'b1010_01)
+  ) u_miso (
+    .PACKAGE_PIN   (P1B10),
+    .OUTPUT_ENABLE (spi_miso_oe),
+    .D_OUT_0       (spi_miso)
   );
 
   assign LEDG_N = ~led_valid;
@@ -137,7 +200,7 @@ module prenc_icebreaker #(
   assign LED4   = led_incremental;
   assign LED5   = pos_valid;
 
-  wire unused_ok = &{1'b0, mode};
+  wire unused_ok = &{1'b0, mode, uvw_u, uvw_v, uvw_w};
 
 endmodule
 

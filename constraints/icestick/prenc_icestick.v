@@ -94,6 +94,10 @@ module prenc_icestick #(
   wire       led_reduced;
   wire       led_incremental;
   wire       led_acquire;
+  wire       spi_miso;       // no SPI, ABI, UVW on the HX1K: it has no room
+  wire       spi_miso_oe;
+  wire       abi_a, abi_b, abi_i;
+  wire       uvw_u, uvw_v, uvw_w;
 
   prenc_board #(
     .N          (N),
@@ -104,7 +108,10 @@ module prenc_icestick #(
     .BAUD       (BAUD),
     .HOST_LINK  (HOST_LINK),
     .HYPOTHESES (HYPOTHESES),
-    .FINE       (0)
+    .FINE       (0),
+    .SPI        (0),
+    .ABI        (0),
+    .UVW        (0)
   ) u_board (
     .clk             (clk),
     .rst             (rst),
@@ -119,6 +126,17 @@ module prenc_icestick #(
     .ssi_gray        (PMOD9),
     .biss_ma         (J1_3),
     .biss_slo        (J1_4),
+    .spi_csn         (1'b1),
+    .spi_sclk        (1'b0),
+    .spi_mosi        (1'b1),
+    .spi_miso        (spi_miso),
+    .spi_miso_oe     (spi_miso_oe),
+    .abi_a           (abi_a),
+    .abi_b           (abi_b),
+    .abi_i           (abi_i),
+    .uvw_u           (uvw_u),
+    .uvw_v           (uvw_v),
+    .uvw_w           (uvw_w),
     .led_valid       (led_valid),
     .led_normal      (led_normal),
     .led_reduced     (led_reduced),
@@ -134,7 +152,8 @@ module prenc_icestick #(
   assign LED4 = led_incremental;
   assign LED5 = led_valid;
 
-  wire unused_ok = &{1'b0, pos_valid, mode};
+  wire unused_ok = &{1'b0, pos_valid, mode, spi_miso, spi_miso_oe, abi_a, abi_b, abi_i,
+                     uvw_u, uvw_v, uvw_w};
 
 endmodule
 

@@ -12,11 +12,18 @@
 //              GP2 SSI clock in, GN2 SSI data out, GP3 SSI Gray select (pulled up: Gray)
 //              GP4 BiSS-C MA in (pulled up), GN4 BiSS-C SLO out (through RS-422
 //              transceivers to the drive: docs/biss-c.md)
+//              GP5 SPI CSn in (pulled up), GN5 SCLK in (pulled down), GP6 MOSI in
+//              (pulled up: a drive that has no MOSI reads ANGLECOM), GN6 MISO out (high
+//              impedance while CSn is high: docs/interfaces/as5047.md)
+//              GP7 A, GN7 B, GP8 I out; GN8 U, GP9 V, GN9 W out
+//              (docs/interfaces/abi-uvw.md)
 //   UART:      ftdi_txd (M1) in, ftdi_rxd (L4) out, the on-board FT231X
 //   LEDs:      led[0] pos_valid, led[1] ACQUIRE, led[2] NORMAL, led[3] REDUCED,
 //              led[4] INCREMENTAL
 //
-// Parameters: N, TAPS, FILTER, ROM_FILE, BAUD, CAL, CAL_FILE as prenc_board.
+// Parameters: N, TAPS, FILTER, ROM_FILE, BAUD, CAL, CAL_FILE as prenc_board; FINE_BITS,
+// BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO, SPI_SETTINGS1, SPI_SETTINGS2,
+// ABI_STEPS, ABI_EDGE_NS, UVW_POLE_PAIRS too (make synth PARAMS="NAME=VALUE ...").
 
 `resetall
 `timescale 1ns / 1ps
@@ -29,16 +36,34 @@ module prenc_ulx3s #(
   parameter         ROM_FILE = "prenc_rom_n10.hex",
   parameter integer BAUD     = 115200,
   parameter integer CAL      = 0,
-  parameter         CAL_FILE = ""
+  parameter         CAL_FILE = "",
+  parameter integer FINE_BITS       = 0,
+  parameter integer BISS_MT_BITS    = 12,
+  parameter integer BISS_ST_BITS    = 0,
+  parameter integer BISS_ERROR_HIGH = 0,
+  parameter integer SPI_ZERO        = 0,
+  parameter integer SPI_SETTINGS1   = 1,
+  parameter integer SPI_SETTINGS2   = 0,
+  parameter integer ABI_STEPS       = 0,
+  parameter integer ABI_EDGE_NS     = 250,
+  parameter integer UVW_POLE_PAIRS  = 0
 ) (
   input  wire       clk_25mhz,
   input  wire [1:1] btn,
   input  wire       ftdi_txd,
   output wire       ftdi_rxd,
-  input  wire [4:0] gp,
+  input  wire [6:0] gp,
   input  wire [1:0] gn,
   output wire       gn2,
   output wire       gn4,
+  input  wire       gn5,
+  output wire       gn6,
+  output wire       gp7,
+  output wire       gn7,
+  output wire       gp8,
+  output wire       gn8,
+  output wire       gp9,
+  output wire       gn9,
   output wire [7:0] led,
   output wire       wifi_gpio0
 );
@@ -101,6 +126,8 @@ module prenc_ulx3s #(
   wire [2:0] mode;
   wire       ssi_data;
   wire       biss_slo;
+  wire       spi_miso;
+  wire       spi_miso_oe;
 
   prenc_board #(
     .N        (N),
@@ -110,7 +137,17 @@ module prenc_ulx3s #(
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
     .CAL      (CAL),
-    .CAL_FILE (CAL_FILE)
+    .CAL_FILE (CAL_FILE),
+    .FINE_BITS       (FINE_BITS),
+    .BISS_MT_BITS    (BISS_MT_BITS),
+    .BISS_ST_BITS    (BISS_ST_BITS),
+    .BISS_ERROR_HIGH (BISS_ERROR_HIGH),
+    .SPI_ZERO        (SPI_ZERO),
+    .SPI_SETTINGS1   (SPI_SETTINGS1),
+    .SPI_SETTINGS2   (SPI_SETTINGS2),
+    .ABI_STEPS       (ABI_STEPS),
+    .ABI_EDGE_NS     (ABI_EDGE_NS),
+    .UVW_POLE_PAIRS  (UVW_POLE_PAIRS)
   ) u_board (
     .clk             (clk),
     .rst             (rst),
@@ -125,6 +162,17 @@ module prenc_ulx3s #(
     .ssi_gray        (gp[3]),
     .biss_ma         (gp[4]),
     .biss_slo        (biss_slo),
+    .spi_csn         (gp[5]),
+    .spi_sclk        (gn5),
+    .spi_mosi        (gp[6]),
+    .spi_miso        (spi_miso),
+    .spi_miso_oe     (spi_miso_oe),
+    .abi_a           (gp7),
+    .abi_b           (gn7),
+    .abi_i           (gp8),
+    .uvw_u           (gn8),
+    .uvw_v           (gp9),
+    .uvw_w           (gn9),
     .led_valid       (led[0]),
     .led_acquire     (led[1]),
     .led_normal      (led[2]),
@@ -132,6 +180,13 @@ module prenc_ulx3s #(
     .led_incremental (led[4]),
     .pos_valid       (pos_valid),
     .mode            (mode)
+  );
+
+  // MISO: a tristate output (OBZ: T = 1 is high impedance), driven while CSn is low.
+  OBZ u_miso (
+    .I (spi_miso),
+    .T (~spi_miso_oe),
+    .O (gn6)
   );
 
   assign gn2        = ssi_data;

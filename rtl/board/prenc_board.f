@@ -8,4 +8,8 @@
 prenc_ssi.v
 prenc_turns.v
 prenc_biss.v
+prenc_as5047.v
+prenc_step_tracker.v
+prenc_abi.v
+prenc_uvw.v
 prenc_board.v

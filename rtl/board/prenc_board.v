@@ -6,16 +6,21 @@
 //                             -> prenc_fine (fine position, velocity; docs/fine.md)
 //                                -> prenc_turns -> prenc_ssi  (SSI to a motion controller)
 //                                               -> prenc_biss (BiSS-C to a servo drive)
+//                                               -> prenc_as5047 (SPI, as the AS5047P)
+//                                               -> prenc_abi, prenc_uvw (A/B/I, U/V/W)
 //                             -> mode LEDs
 //
 // SSI and BiSS-C send the fine position, N + 2 + FINE_BITS bits, extrapolated to the
-// master's first falling clock edge (EXTRAPOLATE = 1). The pins reach the fine output
+// master's first falling clock edge (EXTRAPOLATE = 1); the SPI its top 14 bits (prenc_fine
+// makes at least 14: FINE_BITS or 12 - N more, of which SSI and BiSS-C drop the last),
+// extrapolated to CSn's falling edge. The pins reach the fine output
 // in 2 + FILTER + 1 + 4 + 3 clocks (4 more with CAL = 1: prenc_fine's table), half a
 // clock after the edge on average. The frame latches the fine output of the clock that
 // first samples the master's edge (its synchronizer and prenc_turns' register take the
 // two clocks to the latch), half a clock after that edge on average: LOOKAHEAD_HALVES
-// = 2 (10 + FILTER + 4 CAL). Both take the fine position from prenc_turns' register, so
-// turns and position are always one pair.
+// = 2 (10 + FILTER + 4 CAL). All three take the fine position from prenc_turns'
+// register, so turns and position are always one pair, and the SPI's CSn passes the
+// same synchronizer.
 //
 // The board tops in constraints/<board>/ add the PLL, the power-on reset and the
 // pin names; this module is what the tests simulate (tb/prenc_board).
@@ -35,6 +40,22 @@
 //   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
 //                 period of the slowest MA). MA up to CLK_HZ / 5 (docs/biss-c.md)
+//   BISS_ST_BITS  0: the single-turn field is BISS_HYBRID's (default); 8..40: that many
+//                 bits, the fine position's top ones (zeros below), for a master that
+//                 knows only fixed layouts (docs/biss-c.md: OnStepX's, VESC's)
+//   BISS_ERROR_HIGH   0: the error bit nE is 0 on an error (BiSS-C's, default); 1: it is
+//                 1 (the Broadcom AS37-H39B's, as OnStepX reads it)
+//   SPI           1: the AS5047P-compatible SPI slave is built (default); 0: not
+//                 (spi_miso_oe is 0). SCLK up to 10 MHz at 30 MHz (prenc_as5047)
+//   SPI_ZERO, SPI_SETTINGS1, SPI_SETTINGS2   its zero and settings after reset
+//                 (prenc_as5047's ZERO, SETTINGS1, SETTINGS2: 0, 0x01, 0x00); with SPI = 0
+//                 the zero and settings that ABI and UVW keep
+//   ABI           1: A/B quadrature and the index are built (prenc_abi; default); 0: not
+//   ABI_STEPS     steps per turn, a multiple of 4 up to the fine position's 2^(N+2+FB);
+//                 0: the AS5047P's ABIRES and ABIBIN (default 0: 4000 steps)
+//   ABI_EDGE_NS   the shortest time between two edges of A and B (default 250 ns)
+//   UVW           1: U, V, W commutation signals are built (prenc_uvw; default); 0: not
+//   UVW_POLE_PAIRS  0: the AS5047P's UVWPP (default 0: 1 pole pair); else 1..32
 //   HOST_LINK     1: the host link and the edges' capture are built (default); 0: not
 //                 (uart_tx idles high, uart_rx is unused, the error counters are never
 //                 cleared: the iCEstick's HX1K has no room for the link's ~1,000 cells)
@@ -61,8 +82,12 @@
 //   head1, head2, sync_a, sync_b   the encoder's outputs (asynchronous)
 //   uart_rx, uart_tx               the host link
 //   ssi_clk, ssi_data, ssi_gray    SSI: clock from the controller, data, 1 = Gray code
-//   biss_ma, biss_slo              BiSS-C: clock from the master, data to it (SSI and
-//                                  BiSS-C are both built, on their own pins)
+//   biss_ma, biss_slo              BiSS-C: clock from the master, data to it (SSI,
+//                                  BiSS-C and SPI are all built, on their own pins)
+//   spi_csn, spi_sclk, spi_mosi, spi_miso, spi_miso_oe   the SPI (MISO is driven while
+//                                  spi_miso_oe is 1: a tristate on the board's pin)
+//   abi_a, abi_b, abi_i            A/B quadrature and the index (docs/interfaces/abi-uvw.md)
+//   uvw_u, uvw_v, uvw_w            U, V, W
 //   led_valid                      pos_valid
 //   led_normal, led_reduced, led_incremental, led_acquire   the mode, one-hot
 //   pos_valid, mode                the core's, for test benches and debug headers
@@ -83,6 +108,17 @@ module prenc_board #(
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_HYBRID     = 1,
   parameter integer BISS_TIMEOUT_US = 20,
+  parameter integer BISS_ST_BITS    = 0,
+  parameter integer BISS_ERROR_HIGH = 0,
+  parameter integer SPI             = 1,
+  parameter integer SPI_ZERO        = 0,
+  parameter integer SPI_SETTINGS1   = 1,
+  parameter integer SPI_SETTINGS2   = 0,
+  parameter integer ABI             = 1,
+  parameter integer ABI_STEPS       = 0,
+  parameter integer ABI_EDGE_NS     = 250,
+  parameter integer UVW             = 1,
+  parameter integer UVW_POLE_PAIRS  = 0,
   parameter integer HOST_LINK       = 1,
   parameter integer EDGE_CAPTURE    = 1,
   parameter integer FINE            = 1,
@@ -113,6 +149,17 @@ module prenc_board #(
   input  wire       ssi_gray,
   input  wire       biss_ma,
   output wire       biss_slo,
+  input  wire       spi_csn,
+  input  wire       spi_sclk,
+  input  wire       spi_mosi,
+  output wire       spi_miso,
+  output wire       spi_miso_oe,
+  output wire       abi_a,
+  output wire       abi_b,
+  output wire       abi_i,
+  output wire       uvw_u,
+  output wire       uvw_v,
+  output wire       uvw_w,
   output wire       led_valid,
   output wire       led_normal,
   output wire       led_reduced,
@@ -168,6 +215,32 @@ module prenc_board #(
     if (EXTRAPOLATE < 0 || EXTRAPOLATE > 1) begin : g_bad_extrapolate
       initial $display("ERROR: %m: parameter EXTRAPOLATE = %0d must be 0 or 1", EXTRAPOLATE);
       prenc_board_parameter_EXTRAPOLATE_must_be_0_or_1 u_stop ();
+    end
+    if (SPI < 0 || SPI > 1) begin : g_bad_spi
+      initial $display("ERROR: %m: parameter SPI = %0d must be 0 or 1", SPI);
+      prenc_board_parameter_SPI_must_be_0_or_1 u_stop ();
+    end
+    if (BISS_ST_BITS != 0 && (BISS_ST_BITS < 8 || BISS_ST_BITS > 40)) begin : g_bad_biss_st_bits
+      initial $display("ERROR: %m: parameter BISS_ST_BITS = %0d must be 0 or 8..40", BISS_ST_BITS);
+      prenc_board_parameter_BISS_ST_BITS_must_be_0_or_8_to_40 u_stop ();
+    end
+    if (BISS_ERROR_HIGH < 0 || BISS_ERROR_HIGH > 1) begin : g_bad_biss_error_high
+      initial $display("ERROR: %m: parameter BISS_ERROR_HIGH = %0d must be 0 or 1",
+                       BISS_ERROR_HIGH);
+      prenc_board_parameter_BISS_ERROR_HIGH_must_be_0_or_1 u_stop ();
+    end
+    if (ABI < 0 || ABI > 1) begin : g_bad_abi
+      initial $display("ERROR: %m: parameter ABI = %0d must be 0 or 1", ABI);
+      prenc_board_parameter_ABI_must_be_0_or_1 u_stop ();
+    end
+    if (UVW < 0 || UVW > 1) begin : g_bad_uvw
+      initial $display("ERROR: %m: parameter UVW = %0d must be 0 or 1", UVW);
+      prenc_board_parameter_UVW_must_be_0_or_1 u_stop ();
+    end
+    if (ABI_EDGE_NS < 1 || ABI_EDGE_NS > 1000000) begin : g_bad_abi_edge
+      initial $display("ERROR: %m: parameter ABI_EDGE_NS = %0d is out of range 1..1000000",
+                       ABI_EDGE_NS);
+      prenc_board_parameter_ABI_EDGE_NS_out_of_range_1_to_1000000 u_stop ();
     end
     if (BISS_TIMEOUT_US < 1 || BISS_TIMEOUT_US > 1000) begin : g_bad_biss_timeout
       initial $display("ERROR: %m: parameter BISS_TIMEOUT_US = %0d is out of range 1..1000",
@@ -237,19 +310,25 @@ module prenc_board #(
     .sync_illegal  (sync_illegal)
   );
 
-  // Fine position and velocity (FINE_BITS is checked there). The velocity's window:
+  // Fine position and velocity (FINE_BITS is checked there), with FB >= F fraction bits:
+  // the SPI's 14 (FB's floor at F bits is the floor at F bits). The velocity's window:
   // 34 us, 1024 clocks at 30 MHz.
   localparam integer F         = FINE_BITS;
+  localparam integer SPI_F     = (SPI == 1 && FINE == 1 && N < 12) ? 12 - N : 0;
+  localparam integer FB        = (SPI_F > F) ? SPI_F : F;
   localparam integer WINDOW    = CLK_HZ / 29297;
   localparam integer POS_BITS  = N + 2 + F;
+  localparam integer FULL_BITS = N + 2 + FB;
+  localparam integer ABI_MIN_GAP = (ABI_EDGE_NS * (CLK_HZ / 1000000) + 999) / 1000;
   localparam integer LOOKAHEAD = (EXTRAPOLATE == 1 && FINE == 1) ? 2 * (10 + FILTER + 4 * CAL)
                                                                 : 0;
-  wire [POS_BITS-1:0] fine_pos;
-  wire                fine_valid;
-  wire                interpolated;
-  wire [31:0]         velocity;        // quarters per clock x 2^32, signed
-  wire                velocity_valid;
-  wire [31:0]         fine_word = {{(32 - POS_BITS){1'b0}}, fine_pos};
+  wire [FULL_BITS-1:0] fine_full;
+  wire [POS_BITS-1:0]  fine_pos = fine_full[FULL_BITS-1:FB-F];
+  wire                 fine_valid;
+  wire                 interpolated;
+  wire [31:0]          velocity;        // quarters per clock x 2^32, signed
+  wire                 velocity_valid;
+  wire [31:0]          fine_word = {{(32 - POS_BITS){1'b0}}, fine_pos};
 
   wire         cal_write;
   wire [N+1:0] cal_address;
@@ -257,7 +336,7 @@ module prenc_board #(
 
   prenc_fine #(
     .N                (N),
-    .FINE_BITS        (F),
+    .FINE_BITS        (FB),
     .LOOKAHEAD_HALVES (LOOKAHEAD),
     .WINDOW           (WINDOW),
     .ENABLE           (FINE),
@@ -274,7 +353,7 @@ module prenc_board #(
     .cal_write      (cal_write),
     .cal_address    (cal_address),
     .cal_data       (cal_data),
-    .fine_pos       (fine_pos),
+    .fine_pos       (fine_full),
     .fine_valid     (fine_valid),
     .interpolated   (interpolated),
     .velocity       (velocity),
@@ -389,18 +468,26 @@ module prenc_board #(
   // Multi-turn from the fine position and the incremental count (in the fine units);
   // `turns_full` is {turns, fine position} of the clock before, always one pair.
   localparam integer BISS_TURN_BITS = (BISS_MT_BITS > 0) ? BISS_MT_BITS : 1;
-  wire [BISS_TURN_BITS-1:0]          turns;
-  wire                               turns_placed;
-  wire [BISS_TURN_BITS+POS_BITS-1:0] turns_full;
-  wire [POS_BITS-1:0]                count_fine = {incremental[N+1:0], {F{1'b0}}};
+  wire [BISS_TURN_BITS-1:0]           turns;
+  wire                                turns_placed;
+  wire [BISS_TURN_BITS+FULL_BITS-1:0] turns_full;
+  wire [FULL_BITS-1:0]                count_fine;
+
+  generate
+    if (FB > 0) begin : g_count_fraction
+      assign count_fine = {incremental[N+1:0], {FB{1'b0}}};
+    end else begin : g_count
+      assign count_fine = incremental[N+1:0];
+    end
+  endgenerate
 
   prenc_turns #(
-    .POS_BITS   (POS_BITS),
+    .POS_BITS   (FULL_BITS),
     .TURN_BITS  (BISS_TURN_BITS)
   ) u_turns (
     .clk      (clk),
     .rst      (rst),
-    .position (fine_pos),
+    .position (fine_full),
     .valid    (fine_valid),
     .count    (count_fine),
     .turns    (turns),
@@ -411,9 +498,10 @@ module prenc_board #(
   // The position SSI and BiSS-C send: the fine one (HYBRID = 1) or its slot (0).
   reg fine_valid_d;  // fine_valid of the clock before, with turns_full
   always @(posedge clk) fine_valid_d <= rst ? 1'b0 : fine_valid;
-  wire [POS_BITS-1:0] fine_held = turns_full[POS_BITS-1:0];
-  wire [N-1:0]        slot_held = fine_held[POS_BITS-1:F+2];
-  wire [BISS_TURN_BITS-1:0] turns_held = turns_full[BISS_TURN_BITS+POS_BITS-1:POS_BITS];
+  wire [FULL_BITS-1:0] full_held = turns_full[FULL_BITS-1:0];
+  wire [POS_BITS-1:0]  fine_held = full_held[FULL_BITS-1:FB-F];
+  wire [N-1:0]         slot_held = full_held[FULL_BITS-1:FB+2];
+  wire [BISS_TURN_BITS-1:0] turns_held = turns_full[BISS_TURN_BITS+FULL_BITS-1:FULL_BITS];
 
   localparam integer SSI_WIDTH = (SSI_HYBRID == 1) ? POS_BITS : N;
   wire [SSI_WIDTH-1:0] ssi_position;
@@ -442,22 +530,30 @@ module prenc_board #(
     .busy     (ssi_busy)
   );
 
-  // BiSS-C: multi-turn and single-turn.
-  localparam integer BISS_ST_BITS   = (BISS_HYBRID == 1) ? POS_BITS : N;
-  localparam integer BISS_BITS      = BISS_MT_BITS + BISS_ST_BITS;
+  // BiSS-C: multi-turn and single-turn; with BISS_ST_BITS a single-turn field of that
+  // width (a layout a master knows): the fine position's top bits, zeros below.
+  localparam integer BISS_ST_NATURAL = (BISS_HYBRID == 1) ? POS_BITS : N;
+  localparam integer BISS_ST         = (BISS_ST_BITS != 0) ? BISS_ST_BITS : BISS_ST_NATURAL;
+  localparam integer BISS_BITS       = BISS_MT_BITS + BISS_ST;
+  wire [BISS_ST-1:0]        biss_single;
   wire [BISS_BITS-1:0]      biss_data;
   wire                      biss_busy;
   wire                      biss_latch;
 
   generate
-    if (BISS_MT_BITS > 0 && BISS_HYBRID == 1) begin : g_biss_mt_hyb
-      assign biss_data = {turns_held, fine_held};
-    end else if (BISS_MT_BITS > 0) begin : g_biss_mt_abs
-      assign biss_data = {turns_held, slot_held};
-    end else if (BISS_HYBRID == 1) begin : g_biss_st_hyb
-      assign biss_data = fine_held;
-    end else begin : g_biss_st_abs
-      assign biss_data = slot_held;
+    if (BISS_ST_BITS == 0 && BISS_HYBRID == 1) begin : g_biss_st_hyb
+      assign biss_single = fine_held;
+    end else if (BISS_ST_BITS == 0) begin : g_biss_st_abs
+      assign biss_single = slot_held;
+    end else if (BISS_ST_BITS <= FULL_BITS) begin : g_biss_st_top
+      assign biss_single = full_held[FULL_BITS-1:FULL_BITS-BISS_ST];
+    end else begin : g_biss_st_padded
+      assign biss_single = {full_held, {(BISS_ST - FULL_BITS){1'b0}}};
+    end
+    if (BISS_MT_BITS > 0) begin : g_biss_mt
+      assign biss_data = {turns_held, biss_single};
+    end else begin : g_biss_st
+      assign biss_data = biss_single;
     end
   endgenerate
 
@@ -468,13 +564,124 @@ module prenc_board #(
     .clk     (clk),
     .rst     (rst),
     .data    (biss_data),
-    .error_n (fine_valid_d),
+    .error_n (BISS_ERROR_HIGH == 1 ? ~fine_valid_d : fine_valid_d),
     .warn_n  (~((mode_now == 3'd2) | (mode_now == 3'd3))),
     .ma      (biss_ma),
     .slo     (biss_slo),
     .busy    (biss_busy),
     .latch   (biss_latch)
   );
+
+  // The position as the AS5047P's outputs give it: at least 14 bits (the fine
+  // position, or below N = 12 without prenc_fine pos_hyb and zeros).
+  // held_14 is prenc_turns' register (with SSI's and BiSS-C's position); next_14 the
+  // value it takes on the next clock, for the SPI, which registers it.
+  localparam integer SHAFT_BITS = (FULL_BITS >= 14) ? FULL_BITS : 14;
+  wire [SHAFT_BITS-1:0] held_14;
+  wire [SHAFT_BITS-1:0] next_14;
+
+  generate
+    if (FULL_BITS >= 14) begin : g_held_14
+      assign held_14 = full_held;
+      assign next_14 = fine_full;
+    end else begin : g_held_14_padded
+      assign held_14 = {full_held, {(14 - FULL_BITS){1'b0}}};
+      assign next_14 = {fine_full, {(14 - FULL_BITS){1'b0}}};
+    end
+  endgenerate
+
+  // SPI, as the AS5047P: the top 14 bits. Its registers (the zero, DIR, ABI's and UVW's
+  // settings) are SPI_ZERO, SPI_SETTINGS1 and SPI_SETTINGS2 without it.
+  wire [13:0] spi_zero;
+  wire [7:0]  spi_settings1;
+  wire [7:0]  spi_settings2;
+
+  generate
+    if (SPI == 1) begin : g_spi
+      prenc_as5047 #(
+        .ZERO      (SPI_ZERO),
+        .SETTINGS1 (SPI_SETTINGS1),
+        .SETTINGS2 (SPI_SETTINGS2)
+      ) u_spi (
+        .clk       (clk),
+        .rst       (rst),
+        .angle     (next_14[SHAFT_BITS-1:SHAFT_BITS-14]),
+        .valid     (fine_valid),
+        .csn       (spi_csn),
+        .sclk      (spi_sclk),
+        .mosi      (spi_mosi),
+        .miso      (spi_miso),
+        .miso_oe   (spi_miso_oe),
+        .zero      (spi_zero),
+        .settings1 (spi_settings1),
+        .settings2 (spi_settings2)
+      );
+    end else begin : g_no_spi
+      localparam [31:0] ZERO_32 = SPI_ZERO;
+      localparam [31:0] S1_32   = SPI_SETTINGS1;
+      localparam [31:0] S2_32   = SPI_SETTINGS2;
+      assign spi_miso      = 1'b0;
+      assign spi_miso_oe   = 1'b0;
+      assign spi_zero      = ZERO_32[13:0];
+      assign spi_settings1 = S1_32[7:0];
+      assign spi_settings2 = S2_32[7:0];
+      wire unused_spi = &{1'b0, spi_csn, spi_sclk, spi_mosi, next_14};
+    end
+  endgenerate
+
+  // ABI and UVW: the position turned by DIR and less the zero, registered.
+  reg  [SHAFT_BITS-1:0] shaft;
+  reg                   shaft_valid;
+  wire [SHAFT_BITS-1:0] zero_shaft = {spi_zero, {(SHAFT_BITS - 14){1'b0}}};
+  always @(posedge clk) begin
+    shaft       <= (spi_settings1[2] ? {SHAFT_BITS{1'b0}} - held_14 : held_14) - zero_shaft;
+    shaft_valid <= rst ? 1'b0 : fine_valid_d;
+  end
+
+  generate
+    if (ABI == 1) begin : g_abi
+      prenc_abi #(
+        .B       (SHAFT_BITS),
+        .STEPS   (ABI_STEPS),
+        .MIN_GAP (ABI_MIN_GAP)
+      ) u_abi (
+        .clk       (clk),
+        .rst       (rst),
+        .position  (shaft),
+        .valid     (shaft_valid),
+        .settings1 (spi_settings1),
+        .settings2 (spi_settings2),
+        .a         (abi_a),
+        .b         (abi_b),
+        .i         (abi_i)
+      );
+    end else begin : g_no_abi
+      assign abi_a = 1'b0;
+      assign abi_b = 1'b0;
+      assign abi_i = 1'b0;
+    end
+    if (UVW == 1) begin : g_uvw
+      prenc_uvw #(
+        .B          (SHAFT_BITS),
+        .POLE_PAIRS (UVW_POLE_PAIRS)
+      ) u_uvw (
+        .clk       (clk),
+        .rst       (rst),
+        .position  (shaft),
+        .valid     (shaft_valid),
+        .settings2 (spi_settings2),
+        .u         (uvw_u),
+        .v         (uvw_v),
+        .w         (uvw_w)
+      );
+    end else begin : g_no_uvw
+      assign uvw_u = 1'b0;
+      assign uvw_v = 1'b0;
+      assign uvw_w = 1'b0;
+    end
+  endgenerate
+
+  wire unused_shaft = &{1'b0, shaft, shaft_valid, spi_settings1, spi_settings2};
 
   assign led_valid       = valid;
   assign led_acquire     = (mode_now == 3'd0);
@@ -485,8 +692,8 @@ module prenc_board #(
   assign mode            = mode_now;
 
   wire unused_ok = &{1'b0, position, ssi_busy, biss_busy, biss_latch,
-                     turns_placed, turns, slot_held, fine_held, velocity, sync_step,
-                     sync_illegal};
+                     turns_placed, turns, turns_held, slot_held, fine_held, full_held, velocity,
+                     sync_step, sync_illegal};
 
 endmodule
 

@@ -30,18 +30,21 @@ sys.path.insert(0, str(REPO / "scripts"))
 
 import synth  # noqa: E402  (the flow's own Yosys step)
 
-INPUTS = ("head1", "head2", "sync_a", "sync_b", "ssi_clk", "ssi_gray", "biss_ma", "uart_rx")
-OUTPUTS = ("ssi_data", "biss_slo", "uart_tx")
+INPUTS = ("head1", "head2", "sync_a", "sync_b", "ssi_clk", "ssi_gray", "biss_ma", "uart_rx",
+          "spi_csn", "spi_sclk", "spi_mosi")
+OUTPUTS = ("ssi_data", "biss_slo", "uart_tx", "spi_miso", "abi_a", "abi_b", "abi_i", "uvw_u", "uvw_v", "uvw_w")
 
 
 @dataclass(frozen=True)
 class BoardPins:
     """How a board's top names its pins. `pins` maps a top port to its bits, LSB first:
-    a board signal (INPUTS or OUTPUTS), a constant "0"/"1", or None (unused)."""
+    a board signal (INPUTS or OUTPUTS), a constant "0"/"1", or None (unused); `spi`: the
+    board has the AS5047P-compatible SPI."""
 
     clock: str
     pins: dict[str, tuple[str | None, ...]]
     host_link: bool
+    spi: bool
 
 
 BOARD_PINS = {
@@ -50,18 +53,23 @@ BOARD_PINS = {
         "PMOD1": ("head1",), "PMOD2": ("head2",), "PMOD3": ("sync_a",), "PMOD4": ("sync_b",),
         "PMOD7": ("ssi_clk",), "PMOD8": ("ssi_data",), "PMOD9": ("ssi_gray",),
         "J1_3": ("biss_ma",), "J1_4": ("biss_slo",),
-    }, host_link=False),
+    }, host_link=False, spi=False),
     "icebreaker": BoardPins("CLK", {
         "BTN_N": ("1",), "RX": ("uart_rx",), "TX": ("uart_tx",),
         "P1A1": ("head1",), "P1A2": ("head2",), "P1A3": ("sync_a",), "P1A4": ("sync_b",),
         "P1A7": ("ssi_clk",), "P1A8": ("ssi_data",), "P1A9": ("ssi_gray",),
         "P1B1": ("biss_ma",), "P1B2": ("biss_slo",),
-    }, host_link=True),
+        "P1B7": ("spi_csn",), "P1B8": ("spi_sclk",), "P1B9": ("spi_mosi",), "P1B10": ("spi_miso",),
+        "P1B3": ("abi_a",), "P1B4": ("abi_b",), "P1A10": ("abi_i",),
+    }, host_link=True, spi=True),
     "ulx3s": BoardPins("clk_25mhz", {
         "btn": ("0",), "ftdi_txd": ("uart_rx",), "ftdi_rxd": ("uart_tx",),
-        "gp": ("head1", "sync_a", "ssi_clk", "ssi_gray", "biss_ma"),
+        "gp": ("head1", "sync_a", "ssi_clk", "ssi_gray", "biss_ma", "spi_csn", "spi_mosi"),
         "gn": ("head2", "sync_b"), "gn2": ("ssi_data",), "gn4": ("biss_slo",),
-    }, host_link=True),
+        "gn5": ("spi_sclk",), "gn6": ("spi_miso",),
+        "gp7": ("abi_a",), "gn7": ("abi_b",), "gp8": ("abi_i",),
+        "gn8": ("uvw_u",), "gp9": ("uvw_v",), "gn9": ("uvw_w",),
+    }, host_link=True, spi=True),
 }
 
 

@@ -51,10 +51,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "prenc_board"))
 from biss_master import Master  # noqa: E402
 from board_harness import drive_encoder  # noqa: E402
 from common import PERIOD_NS  # noqa: E402
-from prenc.board import protocol, ssi  # noqa: E402
+from prenc.board import as5047, protocol, ssi  # noqa: E402
 from prenc.virtual.encoder import Disc  # noqa: E402
 from prenc.virtual.scenarios import core_latency  # noqa: E402
 from runner import SIM_BUILD, run  # noqa: E402
+from spi_master import SpiMaster  # noqa: E402
 from uart import UartSink, UartSource  # noqa: E402
 
 pytestmark = pytest.mark.synth  # Yosys makes the netlists
@@ -119,6 +120,9 @@ async def the_netlist_equals_the_rtl_clock_for_clock(dut):
     dut.ssi_gray.value = 1
     dut.biss_ma.value = 1
     dut.uart_rx.value = 1
+    dut.spi_csn.value = 1
+    dut.spi_sclk.value = 0
+    dut.spi_mosi.value = 1
     cocotb.start_soon(Clock(dut.clk, PERIOD_NS, unit="ns").start())
     await ClockCycles(dut.clk, START)
     if os.environ.get("PRENC_EXPECT") == "mismatch":  # the RTL was edited: it must show
@@ -128,7 +132,8 @@ async def the_netlist_equals_the_rtl_clock_for_clock(dut):
         return
     cocotb.start_soon(drive_encoder(dut, theta_at, disc=Disc(N)))
     master = Master(dut, clk_hz / 5, clk_hz, ma="biss_ma", slo="biss_slo")
-    checked = {"biss": 0, "ssi": 0, "host": 0}
+    spi = SpiMaster(dut, clk_hz / 6, clk_hz, lead_ns=200, gap_ns=200) if os.environ.get("PRENC_SPI") else None
+    checked = {"biss": 0, "ssi": 0, "host": 0, "spi": 0}
     await ClockCycles(dut.clk, 1_000)
     for phase in ("clockwise", "back"):
         asked = []
@@ -139,6 +144,14 @@ async def the_netlist_equals_the_rtl_clock_for_clock(dut):
         position, valid, latched = await read_ssi(dut, 5)  # while BiSS-C's timeout runs
         assert valid and position in truth(latched, latched), (latched, position)
         checked["ssi"] += 1
+        if spi:   # ODrive's read: 0xFFFF, answered by the angle at CSn's fall
+            opened = []
+            await spi.frame(0xFFFF)
+            answer = as5047.Answer(await spi.frame(0xFFFF, on_open=opened.append))
+            assert answer.parity_ok and not answer.error, hex(answer.word)
+            at = opened[0] / PERIOD_NS
+            assert answer.data >> (14 - ST_BITS) in truth(at, at), (at, answer.data)
+            checked["spi"] += 1
         if os.environ.get("PRENC_HOST_BAUD") and phase == "clockwise":
             answer, first, last = await ask_host(dut, clk_hz // int(os.environ["PRENC_HOST_BAUD"]))
             assert answer.valid and answer.values["position"] in truth(first, last), (first, last, answer)
@@ -178,6 +191,8 @@ def prepare(board: str, where: Path, rtl_edit=None) -> tuple[list[Path], dict[st
     env = {"PRENC_BOARD": board, "PRENC_CLK_HZ": str(round(b.clock_mhz * 1e6))}
     if host_link:
         env["PRENC_HOST_BAUD"] = str(BAUD[board])
+    if pair.BOARD_PINS[board].spi:
+        env["PRENC_SPI"] = "1"
     # Icarus takes no default values on input ports: every cell input is connected.
     args = ["-DNO_ICE40_DEFAULT_ASSIGNMENTS"]
     return sources, env, args

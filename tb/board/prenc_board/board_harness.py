@@ -33,12 +33,16 @@ CHUNK = 200_000  # encoder signals are generated this many clocks at a time
 
 async def start_board(dut, reset_clocks: int = 6) -> None:
     """Idle levels on every input of prenc_board (encoder pins 0, SSI and BiSS-C
-    clocks and the UART line high, Gray selected), then clock and reset."""
+    clocks and the UART line high, Gray selected, SPI's CSn high, SCLK low, MOSI high
+    as the boards' pull-up holds it), then clock and reset."""
     for pin in PINS:
         getattr(dut, pin).value = 0
     dut.ssi_clk.value = 1
     dut.ssi_gray.value = 1
     dut.biss_ma.value = 1
+    dut.spi_csn.value = 1
+    dut.spi_sclk.value = 0
+    dut.spi_mosi.value = 1
     dut.uart_rx.value = 1
     await start_clock_and_reset(dut, reset_clocks)
 

@@ -70,8 +70,11 @@ class Board:
             valid = int(dut.u_core.pos_valid.value)
             if valid and self.first_valid is None:
                 self.first_valid = clock
-            pair = int(dut.u_turns.full.value)
-            before = {"turns": pair >> ST_BITS, "position": pair & ((1 << ST_BITS) - 1),
+            # prenc_turns keeps the fine position at the SPI's 14 bits at least (FULL_BITS);
+            # BiSS-C sends its top ST_BITS.
+            pair, full_bits = int(dut.u_turns.full.value), len(dut.full_held)
+            before = {"turns": pair >> full_bits,
+                      "position": (pair & ((1 << full_bits) - 1)) >> (full_bits - ST_BITS),
                       "valid": int(dut.fine_valid_d.value), "mode": int(dut.u_core.mode.value)}
 
 
