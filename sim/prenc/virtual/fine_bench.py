@@ -72,13 +72,21 @@ class Sync:
     pos_hyb: np.ndarray    # the core's pos_hyb (pos_valid = 1)
 
 
-def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N) -> Sync:
-    """The decoder's steps and pos_hyb for a clean run of the sync track."""
+def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N, sensors=()) -> Sync:
+    """The decoder's steps and pos_hyb for a run of the sync track: clean, or through the
+    sensors' effects (prenc.virtual.sensors, applied to A and B in order)."""
     disc = Disc(n, printing=printing)
     if printing is None:
         a, b = disc.sync(theta)
     else:
         a, b = printing.sync(theta, disc.length)
+    if sensors:
+        from .encoder import EncoderRun
+
+        run = EncoderRun(disc, CLK_HZ, theta, {"head1": a, "head2": a, "a": a.copy(), "b": b.copy()})
+        for effect in sensors:
+            effect.apply(run)
+        a, b = run.a, run.b
     q = (a.astype(np.int64) << 1) | (1 - (a ^ b))
     delta = (q[1:] - q[:-1]) & 3
     if np.any(delta == 2):
@@ -318,10 +326,10 @@ def baseline_velocities(sync: Sync) -> dict[str, np.ndarray]:
             "mixed": sampled_velocity(sync, True), "count": sampled_velocity(sync, False)}
 
 
-def evaluate(case: Case, printing: Printing | None, table=None) -> dict[str, Row]:
+def evaluate(case: Case, printing: Printing | None, table=None, sensors=()) -> dict[str, Row]:
     """The coarse position, ours (with `table`, a calibration table's corrections: CAL =
-    1) and the baselines in one case."""
-    sync = sync_stream(case.theta, printing)
+    1) and the baselines in one case (through the sensors' effects, if any)."""
+    sync = sync_stream(case.theta, printing, sensors=sensors)
     ours = run_fine(sync, table=table)
     scale = 1 << FINE_BITS
     rows = {"coarse": score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
