@@ -36,7 +36,9 @@
 //                       8 LF: the position has been valid since reset, 7:0 AGC 0x80
 //     0x3FFD MAG        0x1000, a constant: there is no field
 //     0x3FFE ANGLEUNC   the angle, as ANGLECOM: the reader has no dynamic angle error
-//     0x3FFF ANGLECOM   the angle: (angle x (DIR ? -1 : 1) - zero) mod 2^14
+//     0x3FFF ANGLECOM   the angle: ((DIR ? -1 - angle : angle) - zero) mod 2^14 (with DIR
+//                       the one's complement: the floor of the turned angle, as the
+//                       angle itself is the floor of the fine position)
 // - While `valid` is 0 an angle answer carries EF = 1 and the last valid angle (0
 //   before the first): drives that check EF (ODrive, VESC, Klipper) drop it.
 // - The pins pass two-flop synchronizers, so that nothing on them can disturb the
@@ -185,7 +187,7 @@ module prenc_as5047 #(
   reg         valid_now;
   wire        dir        = set1[2];
   wire [13:0] zero_now   = {zposm, zposl[5:0]};
-  wire [13:0] directed   = dir ? (14'd0 - angle) : angle;
+  wire [13:0] directed   = dir ? ~angle : angle;   // -angle - 1: the floor of -(the angle)
   always @(posedge clk) begin
     angle_now <= directed - zero_now;
     valid_now <= rst ? 1'b0 : valid;

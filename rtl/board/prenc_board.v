@@ -634,7 +634,7 @@ module prenc_board #(
   reg                   shaft_valid;
   wire [SHAFT_BITS-1:0] zero_shaft = {spi_zero, {(SHAFT_BITS - 14){1'b0}}};
   always @(posedge clk) begin
-    shaft       <= (spi_settings1[2] ? {SHAFT_BITS{1'b0}} - held_14 : held_14) - zero_shaft;
+    shaft       <= (spi_settings1[2] ? ~held_14 : held_14) - zero_shaft;   // ~: floor of -held
     shaft_valid <= rst ? 1'b0 : fine_valid_d;
   end
 

@@ -83,7 +83,7 @@ class As5047:
 
     def angle(self, raw: int) -> int:
         """The angle an answer carries for the reader's 14-bit angle `raw`."""
-        directed = -raw if self.settings1 & DIR else raw
+        directed = -1 - raw if self.settings1 & DIR else raw   # the one's complement
         return (directed - self.zero) % (1 << 14)
 
     def follow(self, raw: int, valid: bool) -> None:

@@ -83,7 +83,7 @@ def test_zero_and_direction():
     assert s.zero == 0x1ABC and s.angle(0x1ABC) == 0 and s.angle(0x1ABD) == 1
     frame(s, spec.write_command(spec.SETTINGS1))
     frame(s, spec.data_frame(0x01 | spec.DIR))
-    assert s.angle(0x1ABC) == (-0x1ABC - 0x1ABC) % (1 << 14)
+    assert s.angle(0x1ABC) == (-1 - 0x1ABC - 0x1ABC) % (1 << 14)
     assert (s.angle(100) - s.angle(101)) % (1 << 14) == 1
 
 

@@ -155,7 +155,7 @@ async def the_datasheets_frames(dut):
     # DIR: the angle counts the other way.
     await m.frame(spec.write_command(spec.SETTINGS1))
     await m.frame(spec.data_frame(0x01 | spec.DIR))
-    assert (await read(spec.ANGLECOM)).data == (-(angle + 5) - angle) % (1 << 14)
+    assert (await read(spec.ANGLECOM)).data == (-1 - (angle + 5) - angle) % (1 << 14)   # the one's complement
 
     # Not valid: EF and the last valid angle; COF; LF stays.
     held = (await read(spec.ANGLECOM)).data
@@ -169,7 +169,7 @@ async def the_datasheets_frames(dut):
     dut.valid.value = 1
     await ClockCycles(dut.clk, 2)
     a = await read(spec.ANGLECOM)
-    assert not a.error and a.data == (-0x0123 - angle) % (1 << 14)
+    assert not a.error and a.data == (-1 - 0x0123 - angle) % (1 << 14)
 
 
 @pytest.mark.parametrize("simulator", SIMULATORS)
