@@ -116,22 +116,9 @@ module prenc_abi #(
     end
   end
 
-  // Registered (they change when a register is written): S, q, r and the hysteresis,
-  // (3 - HYS) LSB of 14 bits. A new S restarts the tracker on the next clock, as does
-  // the reset.
-  reg  [SB-1:0] steps;
-  reg  [B-1:0]  q;
-  reg  [SB-1:0] r;
-  reg  [B-1:0]  hysteresis;
-  reg           restart;
-  always @(posedge clk) begin
-    steps      <= steps_32[SB-1:0];
-    q          <= q_32[B-1:0];
-    r          <= r_32[SB-1:0];
-    hysteresis <= {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
-    restart    <= rst | (steps_32[SB-1:0] != steps);
-  end
-
+  // The hysteresis: (3 - HYS) LSB of 14 bits.
+  wire [B-1:0]  hysteresis = {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
+  wire          restart;   // the tracker starts again at step 0 (after reset, a new S)
   wire [SB-1:0] count;
   wire         step;
   wire         up;
@@ -145,9 +132,9 @@ module prenc_abi #(
     .rst        (rst),
     .position   (position),
     .valid      (valid),
-    .steps      (steps),
-    .q          (q),
-    .r          (r),
+    .steps      (steps_32[SB-1:0]),
+    .q          (q_32[B-1:0]),
+    .r          (r_32[SB-1:0]),
     .hysteresis (hysteresis),
     .min_gap    (MIN_GAP[15:0]),
     .restart    (restart),

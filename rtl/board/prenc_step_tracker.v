@@ -28,11 +28,12 @@
 // Ports
 //   clk, rst         one clock; synchronous active-high reset
 //   position, valid  the position (2^-B turn, the zero at 0) and its validity
-//   steps, q, r      S (2..2^B; constants while running, taken at restart), floor(2^B / S),
-//                    2^B mod S
-//   hysteresis       in positions (2^-B turn)
+//   steps, q, r      S (2..2^B), floor(2^B / S), 2^B mod S: registered, and a new S
+//                    restarts the tracker on the next clock
+//   hysteresis       in positions (2^-B turn), registered; it counts from the next step
 //   min_gap          clocks from a step to the next, >= 1
-//   restart          one clock: back to count 0 at position 0 (S changed)
+//   restart          one clock: the tracker is back at count 0 at position 0 (the clock
+//                    after reset, and after S changed)
 //   count            the step, 0..S-1
 //   step, up         one clock: a step was taken, upwards (1) or downwards (0)
 //   caught_up        valid, and the count is the position's (no step pending)
@@ -54,7 +55,7 @@ module prenc_step_tracker #(
   input  wire [STEPS_BITS-1:0] r,
   input  wire [B-1:0]          hysteresis,
   input  wire [15:0]           min_gap,
-  input  wire                  restart,
+  output wire                  restart,
   output wire [STEPS_BITS-1:0] count,
   output wire                  step,
   output wire                  up,
@@ -74,6 +75,21 @@ module prenc_step_tracker #(
 
   localparam integer RB = STEPS_BITS + 1;   // the remainders' sums, before reduction
 
+  // The settings, registered (they change when a register is written): S, q, r, the
+  // hysteresis; a new S, and the reset, restart the tracker on the next clock.
+  reg [STEPS_BITS-1:0] s_reg;
+  reg [B-1:0]          q_reg;
+  reg [STEPS_BITS-1:0] r_reg;
+  reg [B-1:0]          hyst_reg;
+  reg                  restart_reg;
+  always @(posedge clk) begin
+    s_reg       <= steps;
+    q_reg       <= q;
+    r_reg       <= r;
+    hyst_reg    <= hysteresis;
+    restart_reg <= rst | (steps != s_reg);
+  end
+
   // The step's edges and their remainders ((k 2^B) mod S), and the positions at which
   // the next step up or down is taken (the edges moved out by the hysteresis).
   reg [STEPS_BITS-1:0] count_reg;
@@ -88,14 +104,14 @@ module prenc_step_tracker #(
   reg                  up_reg;
 
   // One step further up: the new upper edge; one step down: the new lower edge.
-  wire [RB-1:0]         rem_sum     = {1'b0, rem_upper} + {1'b0, r};
-  wire                  carry       = (rem_sum >= {1'b0, steps});
-  wire [STEPS_BITS-1:0] rem_above   = carry ? rem_sum[STEPS_BITS-1:0] - steps
+  wire [RB-1:0]         rem_sum     = {1'b0, rem_upper} + {1'b0, r_reg};
+  wire                  carry       = (rem_sum >= {1'b0, s_reg});
+  wire [STEPS_BITS-1:0] rem_above   = carry ? rem_sum[STEPS_BITS-1:0] - s_reg
                                             : rem_sum[STEPS_BITS-1:0];
-  wire [B-1:0]          above       = upper + q + {{(B - 1){1'b0}}, carry};
-  wire                  borrow      = (rem_lower < r);
-  wire [STEPS_BITS-1:0] rem_below   = borrow ? rem_lower + steps - r : rem_lower - r;
-  wire [B-1:0]          below       = lower - q - {{(B - 1){1'b0}}, borrow};
+  wire [B-1:0]          above       = upper + q_reg + {{(B - 1){1'b0}}, carry};
+  wire                  borrow      = (rem_lower < r_reg);
+  wire [STEPS_BITS-1:0] rem_below   = borrow ? rem_lower + s_reg - r_reg : rem_lower - r_reg;
+  wire [B-1:0]          below       = lower - q_reg - {{(B - 1){1'b0}}, borrow};
 
   // Where the position is: past the thresholds, signed, modulo a turn.
   wire [B-1:0] past_up   = position - up_at;
@@ -113,31 +129,31 @@ module prenc_step_tracker #(
       wait_left <= wait_left - 16'd1;
     end
     if (step_up) begin
-      count_reg <= (count_reg == steps - 1'b1) ? {STEPS_BITS{1'b0}} : count_reg + 1'b1;
+      count_reg <= (count_reg == s_reg - 1'b1) ? {STEPS_BITS{1'b0}} : count_reg + 1'b1;
       lower     <= upper;
       rem_lower <= rem_upper;
       upper     <= above;
       rem_upper <= rem_above;
       up_at     <= above;
-      down_at   <= upper - hysteresis;
+      down_at   <= upper - hyst_reg;
       wait_left <= min_gap - 16'd1;
     end else if (step_down) begin
-      count_reg <= (count_reg == {STEPS_BITS{1'b0}}) ? steps - 1'b1 : count_reg - 1'b1;
+      count_reg <= (count_reg == {STEPS_BITS{1'b0}}) ? s_reg - 1'b1 : count_reg - 1'b1;
       upper     <= lower;
       rem_upper <= rem_lower;
       lower     <= below;
       rem_lower <= rem_below;
-      up_at     <= lower + hysteresis;
+      up_at     <= lower + hyst_reg;
       down_at   <= below;
       wait_left <= min_gap - 16'd1;
     end
-    if (rst || restart) begin
+    if (rst || restart_reg) begin
       count_reg <= {STEPS_BITS{1'b0}};
       lower     <= {B{1'b0}};
       rem_lower <= {STEPS_BITS{1'b0}};
-      upper     <= q;
-      rem_upper <= r;
-      up_at     <= q;
+      upper     <= q_reg;
+      rem_upper <= r_reg;
+      up_at     <= q_reg;
       down_at   <= {B{1'b0}};
       wait_left <= 16'd0;
       step_reg  <= 1'b0;
@@ -145,6 +161,7 @@ module prenc_step_tracker #(
     end
   end
 
+  assign restart   = restart_reg;
   assign count     = count_reg;
   assign step      = step_reg;
   assign up        = up_reg;

@@ -88,20 +88,9 @@ module prenc_uvw #(
       endcase
     end
   end
-  // Registered, as prenc_abi's: 6 P, q, r, the hysteresis; a new P restarts the tracker.
-  reg  [SB-1:0] sectors;
-  reg  [B-1:0]  q;
-  reg  [SB-1:0] r;
-  reg  [B-1:0]  hysteresis;
-  reg           restart;
-  always @(posedge clk) begin
-    sectors    <= sectors_32[SB-1:0];
-    q          <= q_32[B-1:0];
-    r          <= r_32[SB-1:0];
-    hysteresis <= {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
-    restart    <= rst | (sectors_32[SB-1:0] != sectors);
-  end
-
+  // The hysteresis: (3 - HYS) LSB of 14 bits, as prenc_abi's.
+  wire [B-1:0]  hysteresis = {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
+  wire          restart;   // the tracker starts again at sector 0 (after reset, a new P)
   wire [SB-1:0] count;
   wire          step;
   wire          up;
@@ -115,9 +104,9 @@ module prenc_uvw #(
     .rst        (rst),
     .position   (position),
     .valid      (valid),
-    .steps      (sectors),
-    .q          (q),
-    .r          (r),
+    .steps      (sectors_32[SB-1:0]),
+    .q          (q_32[B-1:0]),
+    .r          (r_32[SB-1:0]),
     .hysteresis (hysteresis),
     .min_gap    (16'd1),
     .restart    (restart),

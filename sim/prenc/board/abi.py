@@ -40,9 +40,13 @@ def quadrature(count: int) -> tuple[int, int]:
 @dataclass
 class StepTracker:
     """prenc_step_tracker: the step of `bits`-bit positions in a turn of `steps` steps,
-    with its registers: the edges, their remainders and the thresholds."""
+    with its registers: the settings (S, the hysteresis; a new S or the reset restarts it
+    on the next clock), the edges, their remainders and the thresholds."""
 
     bits: int
+    steps: int | None = None      # the registered S (None: the reset's clocks load it)
+    hyst: int = 0
+    restart: bool = True          # after the reset
     count: int = 0
     lower: int = 0
     upper: int = 0
@@ -54,12 +58,6 @@ class StepTracker:
     step: bool = False
     up: bool = False
 
-    def restart(self, steps: int) -> None:
-        q, r = divmod(1 << self.bits, steps)
-        self.count = self.lower = self.rem_lower = self.down_at = self.wait_left = 0
-        self.upper, self.rem_upper, self.up_at = q, r, q
-        self.step = self.up = False
-
     def decide(self, position: int, valid: bool) -> tuple[bool, bool, bool]:
         """(step up, step down, caught up) on this clock, before it (combinational)."""
         turn = 1 << self.bits
@@ -68,33 +66,41 @@ class StepTracker:
         may = valid and self.wait_left == 0
         return may and want_up, may and want_down and not want_up, valid and not want_up and not want_down
 
-    def clock(self, position: int, valid: bool, steps: int, hyst: int, min_gap: int, restart: bool) -> None:
+    def clock(self, position: int, valid: bool, steps: int, hyst: int, min_gap: int) -> None:
+        """A clock with the settings `steps` and `hyst` at the inputs."""
+        if self.steps is None:
+            self.steps, self.hyst = steps, hyst
         turn = 1 << self.bits
-        q, r = divmod(turn, steps)
+        s = self.steps
+        q, r = divmod(turn, s)
         step_up, step_down, _ = self.decide(position, valid)
         self.step, self.up = step_up or step_down, step_up
         if self.wait_left:
             self.wait_left -= 1
         if step_up:
-            carry = self.rem_upper + r >= steps
+            carry = self.rem_upper + r >= s
             above = (self.upper + q + carry) % turn
-            self.count = 0 if self.count == steps - 1 else self.count + 1
-            self.down_at = (self.upper - hyst) % turn
+            self.count = 0 if self.count == s - 1 else self.count + 1
+            self.down_at = (self.upper - self.hyst) % turn
             self.lower, self.rem_lower = self.upper, self.rem_upper
-            self.upper, self.rem_upper = above, self.rem_upper + r - (steps if carry else 0)
+            self.upper, self.rem_upper = above, self.rem_upper + r - (s if carry else 0)
             self.up_at = above
             self.wait_left = min_gap - 1
         elif step_down:
             borrow = self.rem_lower < r
             below = (self.lower - q - borrow) % turn
-            self.count = steps - 1 if self.count == 0 else self.count - 1
-            self.up_at = (self.lower + hyst) % turn
+            self.count = s - 1 if self.count == 0 else self.count - 1
+            self.up_at = (self.lower + self.hyst) % turn
             self.upper, self.rem_upper = self.lower, self.rem_lower
-            self.lower, self.rem_lower = below, self.rem_lower + (steps if borrow else 0) - r
+            self.lower, self.rem_lower = below, self.rem_lower + (s if borrow else 0) - r
             self.down_at = below
             self.wait_left = min_gap - 1
-        if restart:
-            self.restart(steps)
+        if self.restart:
+            self.count = self.lower = self.rem_lower = self.down_at = self.wait_left = 0
+            self.upper, self.rem_upper, self.up_at = q, r, q
+            self.step = self.up = False
+        self.restart = steps != self.steps
+        self.steps, self.hyst = steps, hyst
 
 
 class Abi:
@@ -103,27 +109,21 @@ class Abi:
     def __init__(self, bits: int, steps: int = 0, min_gap: int = 8):
         self.bits, self.fixed, self.min_gap = bits, steps, min_gap
         self.tracker = StepTracker(bits)
-        self.steps: int | None = None     # the registered S and hysteresis
-        self.hyst = 0
-        self.restart = True               # after the reset
         self.placed = False
         self.a = self.b = self.i = 0
 
     def clock(self, position: int, valid: bool, settings1: int, settings2: int) -> tuple[int, int, int]:
-        table = abi_steps(settings1, settings2, self.fixed)
-        if self.steps is None:            # the reset's clocks loaded the registers
-            self.steps, self.hyst = table, hysteresis(settings2, self.bits)
+        restart = self.tracker.restart
         _, _, caught_up = self.tracker.decide(position, valid)
         count = self.tracker.count
         self.a, self.b = quadrature(count)
         self.i = int(self.placed and count == 0)
         self.placed = self.placed or caught_up
-        self.tracker.clock(position, valid, self.steps, self.hyst, self.min_gap, self.restart)
-        if self.restart:
+        self.tracker.clock(position, valid, abi_steps(settings1, settings2, self.fixed),
+                           hysteresis(settings2, self.bits), self.min_gap)
+        if restart:
             self.placed = False
             self.a = self.b = self.i = 0
-        self.restart = table != self.steps
-        self.steps, self.hyst = table, hysteresis(settings2, self.bits)
         return self.a, self.b, self.i
 
 
@@ -133,17 +133,12 @@ class Uvw:
     def __init__(self, bits: int, pole_pairs: int = 0):
         self.bits, self.fixed = bits, pole_pairs
         self.tracker = StepTracker(bits)
-        self.sectors: int | None = None
-        self.hyst = 0
-        self.restart = True
         self.sector = 0
         self.placed = False
         self.uvw = (0, 0, 0)
 
     def clock(self, position: int, valid: bool, settings2: int) -> tuple[int, int, int]:
-        table = 6 * pole_pairs(settings2, self.fixed)
-        if self.sectors is None:
-            self.sectors, self.hyst = table, hysteresis(settings2, self.bits)
+        restart = self.tracker.restart
         _, _, caught_up = self.tracker.decide(position, valid)
         if not valid:
             self.uvw = (0, 0, 0)
@@ -152,9 +147,8 @@ class Uvw:
         if self.tracker.step:
             self.sector = (self.sector + (1 if self.tracker.up else -1)) % 6
         self.placed = self.placed or caught_up
-        self.tracker.clock(position, valid, self.sectors, self.hyst, 1, self.restart)
-        if self.restart:
+        self.tracker.clock(position, valid, 6 * pole_pairs(settings2, self.fixed),
+                           hysteresis(settings2, self.bits), 1)
+        if restart:
             self.sector, self.placed, self.uvw = 0, False, (0, 0, 0)
-        self.restart = table != self.sectors
-        self.sectors, self.hyst = table, hysteresis(settings2, self.bits)
         return self.uvw
