@@ -77,6 +77,8 @@ import time
 from importlib.metadata import version
 from pathlib import Path
 
+import numpy as np
+
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "tb"))
 
@@ -473,8 +475,44 @@ def sensors_section() -> None:
                   f"{rows['ours'].velocity[0]:>8.4f}/{rows['ours'].velocity[1]:.3f} "
                   f"{rows['period'].velocity[0]:>9.4f}/{rows['period'].velocity[1]:.3f} "
                   f"{rows['mixed'].velocity[0]:>8.4f}/{rows['mixed'].velocity[1]:.3f}")
-    print("   Chatter is not in this table: these models take the input conditioner as a delay, and its")
-    print("   glitch filter (FILTER) is what chatter meets; the RTL's tests and a later bench will measure it.")
+    print("   Chatter is not in this table: these models take the input conditioner as a delay; its")
+    print("   glitch filter (FILTER) is what chatter meets, below.")
+    chatter_filter_rows()
+
+
+def chatter_filter_rows() -> None:
+    """The glitch filter's length against chatter: the shortest FILTER (clocks at 30 MHz)
+    whose conditioner (prenc.core.input_conditioner, the RTL's model) passes no extra
+    transition of A, for chatter of 2 pairs of toggles within a window after each crossing,
+    and the fastest disc that FILTER still tracks (a quadrature state must last
+    max(1, ceil(FILTER / 2)) clocks: section 3)."""
+    from prenc.core.input_conditioner import InputConditioner
+    from prenc.virtual.encoder import Disc, VirtualEncoder
+    from prenc.virtual.sensors import Chatter
+
+    clk = 30e6
+    theta = 3.3 + np.arange(120_000) / 17_578.0       # 100 rpm at N = 10: ~7 slots
+    clean = VirtualEncoder(Disc(10)).run(theta, clk_hz=clk).a
+    want = int(np.count_nonzero(clean[1:] != clean[:-1]))
+    print("\n   FILTER against chatter (2 pairs of toggles within the window after each crossing of A, every")
+    print("   crossing chattering), 30 MHz: the shortest FILTER (of 1, 2, 4, ... clocks) that lets no extra")
+    print("   transition through, and the")
+    print("   fastest disc it tracks (N = 10)")
+    print(f"   {'window':>8} {'FILTER':>8} {'up to':>12}")
+    for window_us in (0.5, 1.0, 2.0, 5.0, 10.0):
+        chattered = VirtualEncoder(Disc(10), [Chatter(pairs=2, window_us=window_us, crawl=1e9, signals=("a",),
+                                                      seed=2)]).run(theta, clk_hz=clk).a
+        found = None
+        for f in (1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024):
+            out = InputConditioner(1, f).run(chattered.reshape(-1, 1), reset_clocks=2)[:, 0]
+            if int(np.count_nonzero(out[1:] != out[:-1])) <= want:
+                found = f
+                break
+        if found is None:
+            print(f"   {window_us:>6.1f}us {'> 1024':>8}")
+            continue
+        dwell = max(1, -(-found // 2))
+        print(f"   {window_us:>6.1f}us {found:>8} {clk / dwell / 4 / 1024 * 60:>8,.0f} rpm")
 
 
 def synth_section() -> None:
