@@ -478,6 +478,34 @@ def sensors_section() -> None:
     print("   Chatter is not in this table: these models take the input conditioner as a delay; its")
     print("   glitch filter (FILTER) is what chatter meets, below.")
     chatter_filter_rows()
+    calibration_jitter_rows()
+
+
+def calibration_jitter_rows() -> None:
+    """The calibration table's error against the crossings' jitter: section 10's 10-turn run
+    at 70 rpm (+-2 % ripple) on the printed disc, each crossing's clock moved by N(0, sigma)
+    slots, through prenc.cal.calibrate; the table against the disc's true edges, beside no
+    table at all (the true corrections themselves)."""
+    from prenc.cal.calibrate import CalibrationError, Record
+    from prenc.virtual import cal_bench as cb
+
+    c_true = cb.truth()
+    none = (c_true - c_true.mean()) / 4
+    print("\n   The calibration table against crossing jitter (10 turns at 70 rpm, +-2 % ripple, printed disc);")
+    print(f"   without a table the edges are {float(np.sqrt(np.mean(none ** 2))):.4f} slot RMS from the truth")
+    print(f"   {'jitter':>8} {'table RMS / max, slots':>24}")
+    rng = np.random.default_rng(5)
+    v = cb.CAL_RPM / 60.0 * (4 << cb.N) / cb.fb.CLK_HZ     # quarters per clock
+    for sigma in (0.0, 0.0025, 0.005, 0.01, 0.02):
+        base = cb.steady_record(c_true, cb.N, cb.CAL_RPM, cb.CAL_TURNS + 0.1, clk_hz=cb.fb.CLK_HZ,
+                                ripple=cb.CAL_RIPPLE[0], ripple_hz=cb.CAL_RIPPLE[1], start_edge=1234,
+                                ripple_phase=0.7)
+        clocks = base.clocks + np.rint(rng.normal(0.0, sigma * 4 / v, len(base.clocks))).astype(np.int64)
+        try:
+            rms, worst = cb.table_error(cb.calibrate(Record(base.n, base.edges, clocks), cb.CAL_TURNS), c_true)
+            print(f"   {sigma:>8.4f} {rms:>12.4f} / {worst:.4f}")
+        except CalibrationError as err:
+            print(f"   {sigma:>8.4f} refused: {str(err).splitlines()[0][:110]}")
 
 
 def chatter_filter_rows() -> None:
