@@ -33,20 +33,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .encoder import SIGNALS, EncoderRun
+from .encoder import EncoderRun
+from .faults import _edges, _signal_key
 
 RC_HALF = np.log(2) / np.log(9)   # the 50 % crossing of an RC step, in 10-90 % rise times
 
 
 def _check_signals(signals: tuple[str, ...]) -> None:
     for s in signals:
-        if s not in SIGNALS:
-            raise ValueError(f"signal must be one of {', '.join(SIGNALS)}, got {s!r}")
-
-
-def _edges(signal: np.ndarray) -> np.ndarray:
-    """Clocks c at which signal[c] != signal[c - 1]."""
-    return np.flatnonzero(signal[1:] != signal[:-1]) + 1
+        _signal_key(s)
 
 
 def _speed(run: EncoderRun) -> np.ndarray:
