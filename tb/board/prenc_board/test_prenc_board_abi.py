@@ -7,8 +7,11 @@ A quadrature counter (a drive's timer in encoder mode) counts A and B from power
 every edge of A, B, I, U, V or W, and at random instants between, it is compared with
 the disc's true angle at that instant (prenc.virtual's trajectory): once the position is
 valid and the outputs have stepped to it, the count equals floor(angle x 4000) (ABIRES
-0: 4000 steps) within one step, the shorter way round from power-up (N = 10 at 30 MHz;
-SPI_SETTINGS2 = 0x03: 4 pole pairs, HYS 0, the hysteresis 3 LSB of 14 bits). The index
+0: 4000 steps), the shorter way round from power-up (N = 10 at 30 MHz; SPI_SETTINGS2 =
+0x03: 4 pole pairs, HYS 0, the hysteresis 3 LSB of 14 bits): within one step at a steady
+speed, within two while the disc speeds up from a stop. There the fine position knows
+little more than its quarter (0.98 step; up to 0.72 step behind the truth seen), and
+the hysteresis (0.73 step) adds to it after a reversal. The index
 is high only where the count is 0 modulo 4000, and comes once per turn as the disc
 passes the zero. U, V, W are 000 until the position is valid, then always the Hall
 pattern of the true electrical angle (4 x the angle) within one sector. Edges of A
@@ -38,6 +41,17 @@ SEGMENTS = [  # (until clock, speed in rpm at the end; linear between)
     (105_000, 0), (135_000, 30_000), (260_000, 30_000),
 ]
 SETTLE = 35_000
+STEADY = 3_000                     # clocks into a constant-speed segment: steady from there
+
+
+def steady(clock: float) -> bool:
+    """Whether the disc has turned at one speed for STEADY clocks at `clock`."""
+    start, speed = START, 1200
+    for until, end_speed in SEGMENTS:
+        if clock < until:
+            return end_speed == speed and clock >= start + STEADY
+        start, speed = until, end_speed
+    return False
 
 
 def angle_at(clocks) -> np.ndarray:
@@ -73,6 +87,7 @@ async def abi_and_uvw_follow_the_disc(dut):
     cocotb.start_soon(drive_encoder(dut, theta_at, disc=Disc(N)))
     states = {(0, 0): 0, (1, 0): 1, (1, 1): 2, (0, 1): 3}
     count, state, last_edge, indexes, checked, sectors_checked = 0, 0, -10**9, [], 0, 0
+    steady_checked = 0
     end = SEGMENTS[-1][0]
     while now() < end:
         await First(Edge(dut.abi_a), Edge(dut.abi_b), Edge(dut.abi_i), Edge(dut.uvw_u), Edge(dut.uvw_v),
@@ -96,15 +111,17 @@ async def abi_and_uvw_follow_the_disc(dut):
             if not indexes or clock - indexes[-1] > 1000:
                 indexes.append(clock)
         if clock >= START + SETTLE:
-            assert abs(off_by(count, clock)) <= 1, (clock, count % STEPS, off_by(count, clock))
+            limit = 1 if steady(clock) else 2
+            assert abs(off_by(count, clock)) <= limit, (clock, count % STEPS, off_by(count, clock))
             checked += 1
+            steady_checked += steady(clock)
             electrical = float(theta_at(np.array([clock]))[0]) / (1 << N) * PAIRS * 6 % 6
             near = {spec.UVW_PATTERN[(int(electrical) + d) % 6] for d in (-1, 0, 1)}
             assert uvw in near, (clock, uvw, electrical)
             sectors_checked += 1
-    dut._log.info("ABI: %d checks, count %d, indexes at %s; UVW: %d checks", checked, count,
-                  [round(c) for c in indexes], sectors_checked)
-    assert checked > 100 and sectors_checked > 100
+    dut._log.info("ABI: %d checks (%d at a steady speed), count %d, indexes at %s; UVW: %d checks",
+                  checked, steady_checked, count, [round(c) for c in indexes], sectors_checked)
+    assert checked > 100 and steady_checked > 100 and sectors_checked > 100
     # One index per pass of the zero: the disc's crossings of it after settling.
     turns = np.floor(angle_at(np.arange(START + SETTLE, end, 20)) / (1 << N))
     crossings = int(np.count_nonzero(np.diff(turns)))
