@@ -13,7 +13,7 @@ PACKAGE = REPO / "sim" / "prenc"
 
 # A subpackage imports only from lower layers (and from itself); the top package gives
 # __version__ to all.
-LAYERS = {"codes": 0, "core": 1, "cal": 1, "bus": 1, "fine": 2, "virtual": 3, "board": 3, "nd": 4, "matrix": 4, "cli": 5}
+LAYERS = {"codes": 0, "core": 1, "cal": 1, "bus": 1, "health": 1, "fine": 2, "virtual": 3, "board": 3, "nd": 4, "matrix": 4, "cli": 5}
 
 
 def module_name(path: Path) -> str:
