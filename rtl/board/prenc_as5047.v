@@ -32,8 +32,10 @@
 //     0x0018 SETTINGS1  2 DIR (1: the angle counts down as the reader counts up); the
 //                       other bits read and written (`settings1` for other blocks)
 //     0x0019 SETTINGS2  7:5 ABIRES, 4:3 HYS, 2:0 UVWPP (`settings2` for other blocks)
-//     0x3FFC DIAAGC     11 MAGL 0, 10 MAGH 0, 9 COF: the position is not valid,
-//                       8 LF: the position has been valid since reset, 7:0 AGC 0x80
+//     0x3FFC DIAAGC     11 MAGL: the warning (prenc_health: the corrections grow, as a
+//                       weakening magnet's field would), 10 MAGH 0, 9 COF: the position
+//                       is not valid, 8 LF: the position has been valid since reset,
+//                       7:0 AGC 0x80
 //     0x3FFD MAG        0x1000, a constant: there is no field
 //     0x3FFE ANGLEUNC   the angle, as ANGLECOM: the reader has no dynamic angle error
 //     0x3FFF ANGLECOM   the angle: ((DIR ? -1 - angle : angle) - zero) mod 2^14 (with DIR
@@ -62,6 +64,7 @@
 // Ports
 //   clk, rst          one clock; synchronous active-high reset
 //   angle, valid      the angle (2^-14 turn) and its validity, latency compensated
+//   warning           prenc_health's warning, shown as DIAAGC's MAGL
 //                     to the clock after they are given
 //   csn, sclk, mosi   the master's (asynchronous)
 //   miso, miso_oe     the answer, and 1 while it is driven (a tristate on the pin)
@@ -80,6 +83,7 @@ module prenc_as5047 #(
   input  wire        rst,
   input  wire [13:0] angle,
   input  wire        valid,
+  input  wire        warning,
   input  wire        csn,
   input  wire        sclk,
   input  wire        mosi,
@@ -204,7 +208,7 @@ module prenc_as5047 #(
       R_ZPOSL:     data = {6'd0, zposl};
       R_SETTINGS1: data = {6'd0, set1};
       R_SETTINGS2: data = {6'd0, set2};
-      R_DIAAGC:    data = {2'd0, 1'b0, 1'b0, ~valid_now, been_valid, AGC};
+      R_DIAAGC:    data = {2'd0, warning, 1'b0, ~valid_now, been_valid, AGC};
       R_MAG:       data = MAGNITUDE;
       R_ANGLEUNC:  data = angle_out;
       R_ANGLECOM:  data = angle_out;

@@ -5,6 +5,7 @@
 -F ../fine/prenc_fine.f
 -F ../cal/prenc_edge_capture.f
 -F prenc_host_link.f
+-F ../health/prenc_health.f
 prenc_ssi.v
 prenc_turns.v
 prenc_biss.v

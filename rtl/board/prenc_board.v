@@ -8,6 +8,8 @@
 //                                               -> prenc_biss (BiSS-C to a servo drive)
 //                                               -> prenc_as5047 (SPI, as the AS5047P)
 //                                               -> prenc_abi, prenc_uvw (A/B/I, U/V/W)
+//                             -> prenc_health (the warning: BiSS-C's nW, the SPI's MAGL,
+//                                the host link's FLAGS; docs/health.md)
 //                             -> mode LEDs
 //
 // SSI and BiSS-C send the fine position, N + 2 + FINE_BITS bits, extrapolated to the
@@ -73,6 +75,9 @@
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
 //   CAL_FILE      with CAL = 1: the table ($readmemh, prenc.cal.table's format, checked in
 //                 simulation); "" : all zero until written
+//   WARN_SLOTS, WARN_BURST   prenc_health's: a source warns when its corrections come
+//                 more often than one per WARN_SLOTS slots of travel (128) or WARN_BURST
+//                 (8) at once
 //   LOCK_BOTH, LOCK_ONE, LOCK_EXTRA, DUAL_VOTES, DUAL_SPAN, HYPOTHESES, SCORE_UP,
 //   SCORE_LIMIT, CONV_REG   the core's decision and build options, passed to it as
 //                 they are (prenc_core's header: ranges and defaults; checked there)
@@ -126,6 +131,8 @@ module prenc_board #(
   parameter integer EXTRAPOLATE     = 1,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
+  parameter integer WARN_SLOTS      = 128,
+  parameter integer WARN_BURST      = 8,
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
   parameter integer LOCK_ONE        = (N < 8) ? N + 5 : N + 2,
   parameter integer LOCK_EXTRA      = 3,
@@ -263,9 +270,29 @@ module prenc_board #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
+  wire          track1_error;
+  wire          track2_error;
   wire          sync_step;
   wire          sync_illegal;
   wire          clear_errors;
+
+  // The warning before a failure: the corrections' rate, per head and the sync track.
+  wire [2:0] warnings;
+  wire       warning;
+
+  prenc_health #(
+    .WARN_SLOTS (WARN_SLOTS),
+    .WARN_BURST (WARN_BURST)
+  ) u_health (
+    .clk          (clk),
+    .rst          (rst),
+    .step         (sync_step),
+    .track1_error (track1_error),
+    .track2_error (track2_error),
+    .sync_illegal (sync_illegal),
+    .warnings     (warnings),
+    .warning      (warning)
+  );
 
   prenc_core #(
     .N           (N),
@@ -306,6 +333,8 @@ module prenc_board #(
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
     .sync_errors   (sync_errors),
+    .track1_error  (track1_error),
+    .track2_error  (track2_error),
     .sync_step     (sync_step),
     .sync_illegal  (sync_illegal)
   );
@@ -423,6 +452,7 @@ module prenc_board #(
         .pos_valid     (valid),
         .mode          (mode_now),
         .direction     (direction),
+        .warning       (warning),
         .incremental   (incremental),
         .track1_pos    (track1_pos),
         .track1_valid  (track1_valid),
@@ -565,7 +595,7 @@ module prenc_board #(
     .rst     (rst),
     .data    (biss_data),
     .error_n (BISS_ERROR_HIGH == 1 ? ~fine_valid_d : fine_valid_d),
-    .warn_n  (~((mode_now == 3'd2) | (mode_now == 3'd3))),
+    .warn_n  (~(warning | (mode_now == 3'd2) | (mode_now == 3'd3))),
     .ma      (biss_ma),
     .slo     (biss_slo),
     .busy    (biss_busy),
@@ -607,6 +637,7 @@ module prenc_board #(
         .rst       (rst),
         .angle     (next_14[SHAFT_BITS-1:SHAFT_BITS-14]),
         .valid     (fine_valid),
+        .warning   (warning),
         .csn       (spi_csn),
         .sclk      (spi_sclk),
         .mosi      (spi_mosi),
@@ -625,7 +656,7 @@ module prenc_board #(
       assign spi_zero      = ZERO_32[13:0];
       assign spi_settings1 = S1_32[7:0];
       assign spi_settings2 = S2_32[7:0];
-      wire unused_spi = &{1'b0, spi_csn, spi_sclk, spi_mosi, next_14};
+      wire unused_spi = &{1'b0, spi_csn, spi_sclk, spi_mosi, next_14, warning};
     end
   endgenerate
 
@@ -693,7 +724,7 @@ module prenc_board #(
 
   wire unused_ok = &{1'b0, position, ssi_busy, biss_busy, biss_latch,
                      turns_placed, turns, turns_held, slot_held, fine_held, full_held, velocity,
-                     sync_step, sync_illegal};
+                     sync_step, sync_illegal, warnings};
 
 endmodule
 

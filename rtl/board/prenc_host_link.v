@@ -22,7 +22,8 @@
 //                          the run): prenc_edge_capture's run, taken by the answer
 //            FF NACK       code (1 unknown type, 2 bad length, 3 unknown kind, 4 no
 //                          calibration table, 5 address out of range), request type
-//   FLAGS    bit 7 pos_valid, bits 6:4 mode, bit 3 direction, bit 2 streaming
+//   FLAGS    bit 7 pos_valid, bits 6:4 mode, bit 3 direction, bit 2 streaming, bit 1
+//            warning (prenc_health: the corrections grow; docs/health.md)
 //   SEQ      counts answers (mod 256); TIME microseconds since reset (mod 2^32)
 //
 // An answer's data are the core's outputs on the clock its frame starts (`snapshot`).
@@ -43,7 +44,7 @@
 // Ports
 //   clk, rst               one clock; synchronous active-high reset
 //   rx, tx                 the UART lines
-//   pos_abs ... sync_errors   the core's outputs
+//   pos_abs ... sync_errors   the core's outputs (warning: prenc_health's, FLAGS bit 1)
 //   fine_pos, velocity, fine_info   prenc_fine's (FINE): the fine position zero-extended,
 //                          the velocity word, {2'b0, interpolated, velocity_valid, FINE_BITS}
 //   edge_*                 prenc_edge_capture's run; edge_take, one clock: the run is taken
@@ -71,6 +72,7 @@ module prenc_host_link #(
   input  wire          pos_valid,
   input  wire [2:0]    mode,
   input  wire          direction,
+  input  wire          warning,
   input  wire [31:0]   incremental,
   input  wire [N-1:0]  track1_pos,
   input  wire          track1_valid,
@@ -336,7 +338,7 @@ module prenc_host_link #(
   end
 
   // The answer, built from this clock's core outputs when start_reg is high.
-  wire [7:0] flags = {pos_valid, mode, direction, streaming, 2'b00};
+  wire [7:0] flags = {pos_valid, mode, direction, streaming, warning, 1'b0};
   reg [15:0] abs16;
   reg [23:0] hyb24;
   reg [15:0] t1_16;

@@ -6,7 +6,8 @@
 // addresses below are the RDL's. In short (byte offsets):
 //   0x00 ID 'prnc'        0x04 VERSION          0x08 PARAMS (N, FILTER)
 //   0x0C CTRL             resolution (rw, reset 1), clear_errors, snapshot (write 1)
-//   0x10 STATUS           valid, mode, direction, track1_valid, track2_valid
+//   0x10 STATUS           valid, mode, direction, track1_valid, track2_valid,
+//                         velocity_valid, the warnings (head 1, head 2, sync)
 //   0x14 POSITION         pos_abs or pos_hyb as CTRL.resolution selects
 //   0x18 POS_ABS  0x1C POS_HYB  0x20 INCREMENTAL  0x24 TRACK1  0x28 TRACK2
 //   0x2C TRACK_ERRORS (track 2 << 16 | track 1)   0x30 SYNC_ERRORS   0x34 TIMESTAMP
@@ -37,7 +38,12 @@
 // in order. CAL_ADDR and CAL_DATA take whole words (wb_sel_i[0] as for the others).
 //
 // Interrupt: IRQ_STATUS.lost_valid is set when pos_valid falls, .mode_change when mode
-// changes (an event beats a clear on the same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
+// changes, .warning when prenc_health's warning rises (an event beats a clear on the
+// same clock); irq = |(IRQ_STATUS & IRQ_ENABLE).
+//
+// Warning (prenc_health, docs/health.md): STATUS.warn_track1, warn_track2, warn_sync, each
+// source's warning: its corrections come more often than one per WARN_SLOTS slots of
+// travel (128), or WARN_BURST (8) at once.
 //
 // Latency: ack one clock after cyc & stb; a read returns the register as it was on the
 // clock the access was sampled. The core's outputs are 6 + FILTER clocks behind the
@@ -51,7 +57,7 @@
 // N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (the
 // velocity's window, 34 us in clocks: 1024 at 30 MHz, the default; docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
-// CAL_FILE (the table it starts with; "" : all zero).
+// CAL_FILE (the table it starts with; "" : all zero); WARN_SLOTS, WARN_BURST (prenc_health's).
 
 `resetall
 `timescale 1ns / 1ps
@@ -76,7 +82,9 @@ module prenc_wb #(
   parameter integer EXTRAPOLATE     = 1,
   parameter integer VELOCITY_WINDOW = 1024,
   parameter integer CAL             = 0,
-  parameter         CAL_FILE        = ""
+  parameter         CAL_FILE        = "",
+  parameter integer WARN_SLOTS      = 128,
+  parameter integer WARN_BURST      = 8
 ) (
   input  wire         clk,
   input  wire         rst,
@@ -166,8 +174,8 @@ module prenc_wb #(
   reg        resolution;
   reg        clear_errors;
   reg        snapshot;
-  reg [1:0]  irq_status;   // {mode_change, lost_valid}
-  reg [1:0]  irq_enable;
+  reg [2:0]  irq_status;   // {warning, mode_change, lost_valid}
+  reg [2:0]  irq_enable;
   reg [31:0] timestamp;
 
   // The core.
@@ -183,8 +191,28 @@ module prenc_wb #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
+  wire          track1_error;
+  wire          track2_error;
   wire          sync_step;
   wire          sync_illegal;
+
+  // The warning before a failure.
+  wire [2:0] warnings;
+  wire       warning;
+
+  prenc_health #(
+    .WARN_SLOTS (WARN_SLOTS),
+    .WARN_BURST (WARN_BURST)
+  ) u_health (
+    .clk          (clk),
+    .rst          (rst),
+    .step         (sync_step),
+    .track1_error (track1_error),
+    .track2_error (track2_error),
+    .sync_illegal (sync_illegal),
+    .warnings     (warnings),
+    .warning      (warning)
+  );
 
   prenc_core #(
     .N           (N),
@@ -225,6 +253,8 @@ module prenc_wb #(
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
     .sync_errors   (sync_errors),
+    .track1_error  (track1_error),
+    .track2_error  (track2_error),
     .sync_step     (sync_step),
     .sync_illegal  (sync_illegal)
   );
@@ -270,7 +300,8 @@ module prenc_wb #(
     .velocity_valid (velocity_valid)
   );
 
-  wire [7:0] status = {velocity_valid, track2_valid, track1_valid, direction, mode, pos_valid};
+  wire [10:0] status = {warnings, velocity_valid, track2_valid, track1_valid, direction, mode,
+                        pos_valid};
 
   // Bus access: one acknowledged access per cyc & stb, ack for one clock.
   wire access = wb_cyc_i & wb_stb_i & ~wb_ack_o;
@@ -279,11 +310,12 @@ module prenc_wb #(
   // Events of the interrupt.
   reg       last_valid;
   reg [2:0] last_mode;
-  wire [1:0] events = {mode != last_mode, last_valid & ~pos_valid};
+  reg       last_warning;
+  wire [2:0] events = {warning & ~last_warning, mode != last_mode, last_valid & ~pos_valid};
 
   // Snapshot registers.
   reg [N+1:0] snap_pos_hyb;
-  reg [7:0]   snap_status;
+  reg [10:0]  snap_status;
   reg [31:0]  snap_incremental;
   reg [31:0]  snap_time;
   reg [W-1:0] snap_fine_pos;
@@ -294,11 +326,12 @@ module prenc_wb #(
       resolution   <= 1'b1;
       clear_errors <= 1'b0;
       snapshot     <= 1'b0;
-      irq_status   <= 2'b00;
-      irq_enable   <= 2'b00;
+      irq_status   <= 3'b000;
+      irq_enable   <= 3'b000;
       timestamp    <= 32'd0;
       last_valid   <= 1'b0;
       last_mode    <= 3'd0;
+      last_warning <= 1'b0;
       wb_ack_o     <= 1'b0;
       cal_addr     <= 18'd0;
       cal_write    <= 1'b0;
@@ -306,11 +339,12 @@ module prenc_wb #(
       timestamp    <= timestamp + 1'b1;
       last_valid   <= pos_valid;
       last_mode    <= mode;
+      last_warning <= warning;
       wb_ack_o     <= access;
       clear_errors <= write0 && wb_adr_i == A_CTRL && wb_dat_i[1];
       snapshot     <= write0 && wb_adr_i == A_CTRL && wb_dat_i[2];
       if (write0 && wb_adr_i == A_CTRL) resolution <= wb_dat_i[0];
-      if (write0 && wb_adr_i == A_IRQ_ENABLE) irq_enable <= wb_dat_i[1:0];
+      if (write0 && wb_adr_i == A_IRQ_ENABLE) irq_enable <= wb_dat_i[2:0];
       cal_write <= (CAL == 1) && write0 && wb_adr_i == A_CAL_DATA;
       if (write0 && wb_adr_i == A_CAL_DATA) begin
         cal_address <= cal_addr[N+1:0];
@@ -319,7 +353,7 @@ module prenc_wb #(
       end
       if (write0 && wb_adr_i == A_CAL_ADDR) cal_addr <= wb_dat_i[17:0];
       if (write0 && wb_adr_i == A_IRQ_STATUS) begin
-        irq_status <= (irq_status & ~wb_dat_i[1:0]) | events;
+        irq_status <= (irq_status & ~wb_dat_i[2:0]) | events;
       end else begin
         irq_status <= irq_status | events;
       end
@@ -330,7 +364,7 @@ module prenc_wb #(
   always @(posedge clk) begin
     if (rst) begin
       snap_pos_hyb     <= {N+2{1'b0}};
-      snap_status      <= 8'd0;
+      snap_status      <= 11'd0;
       snap_incremental <= 32'd0;
       snap_time        <= 32'd0;
       snap_fine_pos    <= {W{1'b0}};
@@ -366,7 +400,7 @@ module prenc_wb #(
         A_PARAMS:           wb_dat_o <= {FILTER[15:0], 5'd0, CAL[0], FINE[0], FINE_BITS[3:0],
                                          N[4:0]};
         A_CTRL:             wb_dat_o <= {31'd0, resolution};
-        A_STATUS:           wb_dat_o <= {24'd0, status};
+        A_STATUS:           wb_dat_o <= {21'd0, status};
         A_POSITION:         wb_dat_o <= {{(30 - N){1'b0}}, position};
         A_POS_ABS:          wb_dat_o <= {{(32 - N){1'b0}}, pos_abs};
         A_POS_HYB:          wb_dat_o <= {{(30 - N){1'b0}}, pos_hyb};
@@ -376,10 +410,10 @@ module prenc_wb #(
         A_TRACK_ERRORS:     wb_dat_o <= {track2_errors, track1_errors};
         A_SYNC_ERRORS:      wb_dat_o <= {16'd0, sync_errors};
         A_TIMESTAMP:        wb_dat_o <= timestamp;
-        A_IRQ_STATUS:       wb_dat_o <= {30'd0, irq_status};
-        A_IRQ_ENABLE:       wb_dat_o <= {30'd0, irq_enable};
+        A_IRQ_STATUS:       wb_dat_o <= {29'd0, irq_status};
+        A_IRQ_ENABLE:       wb_dat_o <= {29'd0, irq_enable};
         A_SNAP_POS_HYB:     wb_dat_o <= {{(30 - N){1'b0}}, snap_pos_hyb};
-        A_SNAP_STATUS:      wb_dat_o <= {24'd0, snap_status};
+        A_SNAP_STATUS:      wb_dat_o <= {21'd0, snap_status};
         A_SNAP_INCREMENTAL: wb_dat_o <= snap_incremental;
         A_SNAP_TIME:        wb_dat_o <= snap_time;
         A_FINE_POS:         wb_dat_o <= fine_word;

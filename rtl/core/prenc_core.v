@@ -65,6 +65,9 @@
 //   track1_pos, track2_pos   the position each track reads, valid with its flag
 //   track1_errors, track2_errors   readings that disagreed with the prediction
 //   sync_errors    illegal quadrature transitions
+//   track1_error, track2_error   one clock: a reading of that head disagreed with the
+//                  prediction and was corrected (what track1_errors, track2_errors count;
+//                  never saturates): for prenc_health's warning
 //   sync_step, sync_illegal   the quadrature decoder's registered step (its direction
 //                  is `direction`) and illegal transition, each a one-clock pulse: the
 //                  sync track's timing, for prenc_fine (velocity, fine position);
@@ -114,6 +117,8 @@ module prenc_core #(
   output wire [ERROR_WIDTH-1:0] track1_errors,
   output wire [ERROR_WIDTH-1:0] track2_errors,
   output wire [ERROR_WIDTH-1:0] sync_errors,
+  output wire                   track1_error,
+  output wire                   track2_error,
   output wire                   sync_step,
   output wire                   sync_illegal
 );
@@ -485,6 +490,8 @@ module prenc_core #(
   assign pos_hyb      = {pos_abs, quarter_out};
   assign position     = resolution ? pos_hyb : {2'b00, pos_abs};
   assign direction    = step_cw;
+  assign track1_error = checked[0] & mismatch[0];
+  assign track2_error = checked[1] & mismatch[1];
   assign sync_step    = step;
   assign sync_illegal = illegal;
   assign track1_pos   = pos_abs;

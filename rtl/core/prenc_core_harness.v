@@ -42,7 +42,7 @@ module prenc_core_harness #(
   // Output bits, then each fold stage's registers: four bits to one, the last LUT of a
   // stage padded with at least one zero (one more register than needed when the bits
   // divide by four; Yosys removes it as constant).
-  localparam integer W0 = 5 * N + 4 + 9 + COUNT_WIDTH + 3 * ERROR_WIDTH;
+  localparam integer W0 = 5 * N + 4 + 11 + COUNT_WIDTH + 3 * ERROR_WIDTH;
   localparam integer W1 = W0 / 4 + 1;
   localparam integer W2 = W1 / 4 + 1;
   localparam integer W3 = W2 / 4 + 1;  // <= 4 for N <= 24
@@ -61,6 +61,8 @@ module prenc_core_harness #(
   wire [ERROR_WIDTH-1:0] track1_errors;
   wire [ERROR_WIDTH-1:0] track2_errors;
   wire [ERROR_WIDTH-1:0] sync_errors;
+  wire                   track1_error;
+  wire                   track2_error;
   wire                   sync_step;
   wire                   sync_illegal;
 
@@ -94,13 +96,16 @@ module prenc_core_harness #(
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
     .sync_errors   (sync_errors),
+    .track1_error  (track1_error),
+    .track2_error  (track2_error),
     .sync_step     (sync_step),
     .sync_illegal  (sync_illegal)
   );
 
   wire [W0-1:0] outputs = {pos_abs, pos_hyb, pos_valid, mode, position, incremental, direction,
                            track1_pos, track1_valid, track2_pos, track2_valid,
-                           track1_errors, track2_errors, sync_errors, sync_step, sync_illegal};
+                           track1_errors, track2_errors, sync_errors, track1_error, track2_error,
+                           sync_step, sync_illegal};
 
   reg  [W1-1:0]   stage1;
   reg  [W2-1:0]   stage2;

@@ -26,7 +26,8 @@ pytestmark = pytest.mark.xdist_group("fusesoc")
 BIN = Path(sys.executable).parent
 VERSION = (REPO / "VERSION").read_text().strip()  # the project's one version
 CORES = [f"prenc:{name}:{VERSION}" for name in
-         ("reader:common", "reader:core", "reader:fine", "reader:cal", "reader:bus", "reader:board",
+         ("reader:common", "reader:core", "reader:fine", "reader:cal", "reader:health", "reader:bus",
+          "reader:board",
           "board:icebreaker", "board:icestick", "board:ulx3s", "codes:nd", "codes:matrix")]
 
 
@@ -85,7 +86,8 @@ def test_core_lint_runs_the_rom_generator(library):
     assert "-Wall" in (work / "Makefile").read_text() + (work / "config.mk").read_text()
 
 
-@pytest.mark.parametrize("core", ["prenc:reader:fine", "prenc:reader:cal", "prenc:reader:bus",
+@pytest.mark.parametrize("core", ["prenc:reader:fine", "prenc:reader:cal", "prenc:reader:health",
+                                  "prenc:reader:bus",
                                   "prenc:reader:board",
                                   "prenc:codes:nd", "prenc:codes:matrix"])
 def test_every_subsystem_lints_clean(library, core):

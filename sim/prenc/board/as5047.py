@@ -19,7 +19,7 @@ READABLE = WRITABLE + (NOP, ERRFL, DIAAGC, MAG, ANGLEUNC, ANGLECOM)
 FRERR, INVCOMM, PARERR = 1 << 0, 1 << 1, 1 << 2  # ERRFL's bits
 DIR = 1 << 2                                      # SETTINGS1's
 AGC, MAGNITUDE = 0x80, 0x1000                     # what DIAAGC and MAG show
-LF, COF = 1 << 8, 1 << 9                          # DIAAGC's
+LF, COF, MAGL = 1 << 8, 1 << 9, 1 << 11           # DIAAGC's (MAGL: prenc_health's warning)
 
 
 def parity(word: int) -> int:
@@ -92,14 +92,14 @@ class As5047:
             self.held = self.angle(raw)
             self.been_valid = True
 
-    def open(self, raw: int, valid: bool) -> int:
-        """CSn falls: the answer word, with the angle `raw` of that instant."""
+    def open(self, raw: int, valid: bool, warning: bool = False) -> int:
+        """CSn falls: the answer word, with the angle `raw` and the warning of that instant."""
         a = self.answer_address
         angle = self.angle(raw) if valid else self.held
         data = {
             ERRFL: self.errfl, PROG: self.prog, ZPOSM: self.zposm, ZPOSL: self.zposl,
             SETTINGS1: self.settings1, SETTINGS2: self.settings2,
-            DIAAGC: (0 if valid else COF) | (LF if self.been_valid else 0) | AGC,
+            DIAAGC: (0 if valid else COF) | (LF if self.been_valid else 0) | (MAGL if warning else 0) | AGC,
             MAG: MAGNITUDE, ANGLEUNC: angle, ANGLECOM: angle,
         }.get(a, 0)
         error = self.errfl != 0 or (a in (ANGLEUNC, ANGLECOM) and not valid)

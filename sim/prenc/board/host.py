@@ -30,7 +30,7 @@ from .protocol import Answer, FrameParser, Kind, Nack
 
 DEFAULT_BAUD = 115200
 KINDS = {k.name.lower(): k for k in Kind if k != Kind.EDGES}   # EDGES: prenc calibrate's
-CSV_FIELDS = ("host_time_s", "board_time_us", "seq", "kind", "valid", "mode", "direction",
+CSV_FIELDS = ("host_time_s", "board_time_us", "seq", "kind", "valid", "mode", "direction", "warning",
               "position", "angle_deg", "count", "track1", "track2", "track1_valid", "track2_valid",
               "fine_position", "fine_bits", "velocity_rpm", "velocity_valid")
 
@@ -195,7 +195,8 @@ def rpm_of(answer: Answer, bits: int) -> float | None:
 
 def as_dict(answer: Answer, bits: int) -> dict:
     out = {"kind": answer.kind.name.lower(), "valid": answer.valid, "mode": answer.mode_name,
-           "direction": "cw" if answer.direction else "ccw", "seq": answer.seq, "board_time_us": answer.time_us}
+           "direction": "cw" if answer.direction else "ccw", "warning": answer.warning, "seq": answer.seq,
+           "board_time_us": answer.time_us}
     out.update(answer.values)
     angle = angle_deg(answer, bits)
     if angle is not None:
@@ -209,6 +210,8 @@ def as_dict(answer: Answer, bits: int) -> dict:
 def describe(answer: Answer, bits: int) -> str:
     v = answer.values
     flags = f"{'valid' if answer.valid else 'NOT VALID'} {answer.mode_name} {'cw' if answer.direction else 'ccw'}"
+    if answer.warning:
+        flags += " WARNING"
     if answer.kind in (Kind.ABS, Kind.HYBRID):
         width = bits if answer.kind == Kind.ABS else bits + 2
         return f"{answer.kind.name.lower()} {v['position']} / {1 << width} = {angle_deg(answer, bits):.3f} deg  {flags}"
@@ -257,7 +260,8 @@ def _row(answer: Answer, bits: int, t0: float) -> dict:
     v = answer.values
     return {"host_time_s": f"{time.monotonic() - t0:.6f}", "board_time_us": answer.time_us, "seq": answer.seq,
             "kind": answer.kind.name.lower(), "valid": int(answer.valid), "mode": answer.mode_name,
-            "direction": "cw" if answer.direction else "ccw", "position": v.get("position", ""),
+            "direction": "cw" if answer.direction else "ccw", "warning": int(answer.warning),
+            "position": v.get("position", ""),
             "angle_deg": "" if angle_deg(answer, bits) is None else f"{angle_deg(answer, bits):.4f}",
             "count": v.get("count", ""), "track1": v.get("track1", ""), "track2": v.get("track2", ""),
             "track1_valid": "" if "track1_valid" not in v else int(v["track1_valid"]),
@@ -313,7 +317,7 @@ def cmd_monitor(args, out: TextIO | None = None) -> None:
                 line = (f"\rposition {pos:>6} {angle_deg(answer, board.bits):9.4f} deg  {rpm:+10.3f} rpm  "
                         f"{answer.mode_name:<11} {'valid' if answer.valid else 'NOT VALID':<9}  errors t1 "
                         f"{s['track1_errors']} t2 {s['track2_errors']} sync {s['sync_errors']} link "
-                        f"{s['link_errors']}  crc {board.crc_errors}")
+                        f"{s['link_errors']}  crc {board.crc_errors}{'  WARNING' if answer.warning else ''}")
                 out.write(line)
                 out.flush()
                 shown += 1

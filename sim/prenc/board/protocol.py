@@ -193,6 +193,7 @@ class Answer:
     seq: int
     time_us: int
     values: dict
+    warning: bool = False  # prenc_health's warning: the corrections grow (FLAGS bit 1)
 
     @property
     def mode_name(self) -> str:
@@ -252,12 +253,14 @@ def decode(frame: Frame) -> Answer | Nack:
         values = {"version": version, "bits": n, "track1_errors": e1, "track2_errors": e2,
                   "sync_errors": es, "link_errors": el}
     return Answer(kind=kind, valid=bool(flags & 0x80), mode=(flags >> 4) & 7, direction=(flags >> 3) & 1,
-                  streaming=bool(flags & 0x04), seq=seq, time_us=time_us, values=values)
+                  streaming=bool(flags & 0x04), seq=seq, time_us=time_us, values=values,
+                  warning=bool(flags & 0x02))
 
 
 def encode_answer(answer: Answer) -> bytes:
     """The frame the board sends for `answer` (for the protocol's own tests and fakes)."""
-    flags = (answer.valid << 7) | (answer.mode << 4) | (answer.direction << 3) | (answer.streaming << 2)
+    flags = ((answer.valid << 7) | (answer.mode << 4) | (answer.direction << 3) | (answer.streaming << 2)
+             | (answer.warning << 1))
     head = bytes([flags, answer.seq & 0xFF]) + struct.pack(">I", answer.time_us & 0xFFFFFFFF)
     v = answer.values
     if answer.kind == Kind.ABS:

@@ -32,6 +32,7 @@ CLK_HZ = 30_000_000
 async def start(dut, angle: int = 0, valid: int = 1) -> None:
     dut.angle.value = angle
     dut.valid.value = valid
+    dut.warning.value = 0
     dut.csn.value = 1
     dut.sclk.value = 0
     dut.mosi.value = 0
@@ -46,22 +47,23 @@ class Bench:
         self.dut = dut
         self.model = spec.As5047()
         self.master = SpiMaster(dut, rate_hz, CLK_HZ, prefix="")
-        self.raw, self.valid = 0, True
+        self.raw, self.valid, self.warning = 0, True, False
 
-    async def set_angle(self, raw: int, valid: bool) -> None:
+    async def set_angle(self, raw: int, valid: bool, warning: bool = False) -> None:
         # The slave decodes the last frame 2 to 3 clocks after CSn rose (a write of the
         # zero changes the held angle on the clock after): wait for it.
         await ClockCycles(self.dut.clk, 4)
         self.model.follow(self.raw, self.valid)
-        self.raw, self.valid = raw, valid
+        self.raw, self.valid, self.warning = raw, valid, warning
         self.dut.angle.value = raw
         self.dut.valid.value = int(valid)
+        self.dut.warning.value = int(warning)
         await ClockCycles(self.dut.clk, 2)
         self.model.follow(raw, valid)
 
     async def frame(self, word: int, clocks: int = 16) -> tuple[int, int]:
         """(the DUT's answer, the model's)."""
-        expected = self.model.open(self.raw, self.valid)
+        expected = self.model.open(self.raw, self.valid, self.warning)
         got = await self.master.frame(word, clocks)
         if clocks > 16:   # after the answer, zeros
             expected <<= clocks - 16
@@ -91,7 +93,7 @@ async def random_traffic_equals_the_model(dut):
         for _ in range(150):
             await Timer(r.randrange(1, 1000 * PERIOD_NS), unit="ps")   # SCLK's phase
             if r.random() < 0.2:
-                await bench.set_angle(r.randrange(1 << 14), r.random() < 0.8)
+                await bench.set_angle(r.randrange(1 << 14), r.random() < 0.8, r.random() < 0.3)
             kind = r.random()
             clocks = 16
             if kind < 0.45:

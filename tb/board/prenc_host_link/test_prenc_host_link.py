@@ -41,7 +41,7 @@ class Link:
     def drive(self, r: random.Random) -> dict:
         n = self.n
         values = {"pos_abs": r.randrange(1 << n), "pos_hyb": r.randrange(1 << (n + 2)), "pos_valid": r.randrange(2),
-                  "mode": r.randrange(5), "direction": r.randrange(2), "incremental": r.randrange(1 << 32),
+                  "mode": r.randrange(5), "direction": r.randrange(2), "warning": r.randrange(2), "incremental": r.randrange(1 << 32),
                   "track1_pos": r.randrange(1 << n), "track1_valid": r.randrange(2),
                   "track2_pos": r.randrange(1 << n), "track2_valid": r.randrange(2),
                   "track1_errors": r.randrange(1 << 16), "track2_errors": r.randrange(1 << 16),
@@ -98,6 +98,7 @@ def check_flags(answer: Answer, v: dict, streaming: bool) -> None:
     assert answer.valid == bool(v["pos_valid"])
     assert answer.mode == v["mode"]
     assert answer.direction == v["direction"]
+    assert answer.warning == bool(v["warning"])
     assert answer.streaming == streaming
 
 

@@ -14,8 +14,10 @@ generates from the map (rtl/bus/prenc_wb.rdl, by scripts/regmap.py).
   position and velocity themselves are held to their models in tb/fine/prenc_fine and
   to the truth in tb/bus/prenc_wb's velocity test below.)
 - Interrupts through a missed-state run: a status bit is set one clock after its event
-  (pos_valid falls, mode changes) and at no other time, falls only when written 1,
-  and irq = |(status & enable) on every clock, whatever the mask.
+  (pos_valid falls, mode changes, prenc_health's warning rises) and at no other time,
+  falls only when written 1, and irq = |(status & enable) on every clock, whatever the
+  mask. (N = 6 is built with WARN_SLOTS = 1, WARN_BURST = 1: the run's corrections
+  raise warnings; prenc_health itself is held to its model in tb/health.)
 
 The clock of a read: the slave samples cyc & stb on the edge before ack rises and
 returns the values of the clock before that edge; the monitor logs every clock.
@@ -81,6 +83,19 @@ class Outputs:
     fine: int
     vword: int
     vvalid: int
+    warnings: int
+
+    @property
+    def w1(self) -> int:
+        return self.warnings & 1
+
+    @property
+    def w2(self) -> int:
+        return self.warnings >> 1 & 1
+
+    @property
+    def wsync(self) -> int:
+        return self.warnings >> 2 & 1
 
 
 class Bench:
@@ -130,7 +145,7 @@ class Bench:
                        core.incremental, core.direction, core.track1_pos, core.track1_valid,
                        core.track2_pos, core.track2_valid, core.track1_errors, core.track2_errors,
                        core.sync_errors, dut.timestamp, dut.irq_status, dut.irq_enable, dut.irq,
-                       dut.resolution, dut.fine_word, dut.velocity, dut.velocity_valid)
+                       dut.resolution, dut.fine_word, dut.velocity, dut.velocity_valid, dut.warnings)
             row = Outputs(*(to_int_x_as_zero(s.value) for s in signals))
             self.log.append(row)
             if row.ack:
@@ -176,7 +191,8 @@ def field_value(reg, name: str, word: int) -> int:
 # Which of the core's outputs each field of the map shows (the field positions come from
 # the RDL, through the generated register model).
 STATUS_FIELDS = {"valid": "valid", "mode": "mode", "direction": "direction",
-                 "track1_valid": "t1valid", "track2_valid": "t2valid", "velocity_valid": "vvalid"}
+                 "track1_valid": "t1valid", "track2_valid": "t2valid", "velocity_valid": "vvalid",
+                 "warn_track1": "w1", "warn_track2": "w2", "warn_sync": "wsync"}
 SOURCES = {
     "CTRL": {"resolution": "resolution", "clear_errors": None, "snapshot": None},
     "STATUS": STATUS_FIELDS,
@@ -242,7 +258,7 @@ async def registers_after_reset_and_writes(dut):
     for value in (3, 1, 2, 0):
         await regs.IRQ_ENABLE.write(value)
         assert await regs.IRQ_ENABLE.read() == value
-    await regs.IRQ_STATUS.write(3)  # write 1 to clear: nothing to set
+    await regs.IRQ_STATUS.write(7)  # write 1 to clear: nothing to set
     assert await regs.IRQ_STATUS.read() == 0
     # Write-1 pulses read back 0.
     await regs.CTRL.write(0b111)
@@ -338,32 +354,33 @@ async def reads_and_snapshots_while_the_encoder_moves(dut):
 async def interrupts_follow_their_events(dut):
     n, filter_len = len(dut.pos_hyb) - 2, int(dut.FILTER.value)
     r = rng()
-    enc = scenarios(n, filter_len, r.randrange(1 << 30))["missed_state"].run(n)
+    enc = scenarios(n, filter_len, r.randrange(1 << 30))["combined"].run(n)
     bench = Bench(dut)
     await bench.start(enc)
     regs = bench.regs
     clear_masks: dict[int, int] = {}
     raised = 0
-    await regs.IRQ_ENABLE.write(0b11)
+    await regs.IRQ_ENABLE.write(0b111)
     while len(bench.log) < len(enc) - 100:
         await bench.clocks(r.randrange(20, 300))
         status, s = await bench.access(regs.IRQ_STATUS.address)
         assert status == bench.log[s].irq_status
         if status:
             raised += 1
-            mask = status if r.random() < 0.8 else status & r.randrange(4)
+            mask = status if r.random() < 0.8 else status & r.randrange(8)
             await bench.access(regs.IRQ_STATUS.address, mask)
             edge = bench.ack_edges[bench.consumed - 1]
             clear_masks[edge] = mask
         if r.random() < 0.2:
-            await regs.IRQ_ENABLE.write(r.randrange(4))
+            await regs.IRQ_ENABLE.write(r.randrange(8))
     log = bench.log
     bits = {f.inst_name: f.lsb for f in regs.IRQ_STATUS.fields}  # the map's, from the RDL
-    events = {"lost_valid": 0, "mode_change": 0}
+    events = {"lost_valid": 0, "mode_change": 0, "warning": 0}
     for k in range(2, len(log)):
         lost = log[k - 2].valid and not log[k - 1].valid
         changed = log[k - 1].mode != log[k - 2].mode
-        for name, event in (("lost_valid", lost), ("mode_change", changed)):
+        warned = bool(log[k - 1].warnings) and not log[k - 2].warnings
+        for name, event in (("lost_valid", lost), ("mode_change", changed), ("warning", warned)):
             bit = bits[name]
             was, now = (log[k - 1].irq_status >> bit) & 1, (log[k].irq_status >> bit) & 1
             events[name] += bool(event)
@@ -376,6 +393,8 @@ async def interrupts_follow_their_events(dut):
         assert log[k].irq == int(bool(log[k].irq_status & log[k].irq_enable)), f"clock {k}: irq"
     dut._log.info("events %s, %d interrupts seen and cleared", events, raised)
     assert events["lost_valid"] > 0 and events["mode_change"] > 0 and raised > 0
+    if int(dut.WARN_BURST.value) == 1:
+        assert events["warning"] > 0
 
 
 @cocotb.test()
@@ -470,6 +489,11 @@ def wb_parameters(n: int, filter_len: int) -> dict:
     return {"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": filter_len, "ROM_FILE": rom_file(n)}
 
 
+def warning_parameters(n: int) -> dict:
+    """N = 6 warns at every correction (the interrupt test sees warnings)."""
+    return {"WARN_SLOTS": 1, "WARN_BURST": 1} if n == 6 else {}
+
+
 @contextlib.contextmanager
 def regmap_env():
     """The Python register access, generated from the RDL into a folder of this test's own
@@ -486,7 +510,8 @@ def regmap_env():
 @pytest.mark.parametrize("n,filter_len", [(10, 2), (6, 0)])
 def test_prenc_wb_verilator(n, filter_len):
     with regmap_env() as env:
-        run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(n, filter_len), extra_env=env)
+        run(__file__, TOPLEVEL, "verilator", parameters=wb_parameters(n, filter_len) | warning_parameters(n),
+            extra_env=env)
 
 
 @pytest.mark.parametrize("simulator", ["verilator", "icarus"])

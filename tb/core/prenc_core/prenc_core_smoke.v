@@ -53,6 +53,8 @@ module prenc_core_smoke #(
   wire [15:0]   track1_errors;
   wire [15:0]   track2_errors;
   wire [15:0]   sync_errors;
+  wire          track1_error;
+  wire          track2_error;
   wire          sync_step;
   wire          sync_illegal;
 
@@ -84,6 +86,8 @@ module prenc_core_smoke #(
     .track1_errors (track1_errors),
     .track2_errors (track2_errors),
     .sync_errors   (sync_errors),
+    .track1_error  (track1_error),
+    .track2_error  (track2_error),
     .sync_step     (sync_step),
     .sync_illegal  (sync_illegal)
   );
