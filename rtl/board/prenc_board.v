@@ -452,7 +452,7 @@ module prenc_board #(
         .pos_valid     (valid),
         .mode          (mode_now),
         .direction     (direction),
-        .warning       (warning),
+        .warnings      (warnings),
         .incremental   (incremental),
         .track1_pos    (track1_pos),
         .track1_valid  (track1_valid),

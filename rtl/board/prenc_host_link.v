@@ -20,10 +20,13 @@
 //            kind 6 EDGES  info (bit 7 lost, 6 direction CW, 5 pos_valid, 1:0 run), the run's
 //                          first edge (3 bytes), 3 intervals (2 bytes each, clocks; 0 past
 //                          the run): prenc_edge_capture's run, taken by the answer
+//            kind 7 HEALTH pos_abs (2 bytes), track1/track2/sync error counters (2 bytes
+//                          each), warnings (bit 0 head 1, 1 head 2, 2 sync): streamed, where
+//                          on the disc the corrections happen (`prenc host map`)
 //            FF NACK       code (1 unknown type, 2 bad length, 3 unknown kind, 4 no
 //                          calibration table, 5 address out of range), request type
 //   FLAGS    bit 7 pos_valid, bits 6:4 mode, bit 3 direction, bit 2 streaming, bit 1
-//            warning (prenc_health: the corrections grow; docs/health.md)
+//            warning (any of prenc_health's warnings: the corrections grow; docs/health.md)
 //   SEQ      counts answers (mod 256); TIME microseconds since reset (mod 2^32)
 //
 // An answer's data are the core's outputs on the clock its frame starts (`snapshot`).
@@ -44,7 +47,7 @@
 // Ports
 //   clk, rst               one clock; synchronous active-high reset
 //   rx, tx                 the UART lines
-//   pos_abs ... sync_errors   the core's outputs (warning: prenc_health's, FLAGS bit 1)
+//   pos_abs ... sync_errors   the core's outputs (warnings: prenc_health's)
 //   fine_pos, velocity, fine_info   prenc_fine's (FINE): the fine position zero-extended,
 //                          the velocity word, {2'b0, interpolated, velocity_valid, FINE_BITS}
 //   edge_*                 prenc_edge_capture's run; edge_take, one clock: the run is taken
@@ -72,7 +75,7 @@ module prenc_host_link #(
   input  wire          pos_valid,
   input  wire [2:0]    mode,
   input  wire          direction,
-  input  wire          warning,
+  input  wire [2:0]    warnings,
   input  wire [31:0]   incremental,
   input  wire [N-1:0]  track1_pos,
   input  wire          track1_valid,
@@ -130,7 +133,7 @@ module prenc_host_link #(
     end
   endgenerate
 
-  localparam [7:0]  VERSION     = 8'd3;
+  localparam [7:0]  VERSION     = 8'd4;
   localparam [31:0] CLK_MHZ     = CLK_HZ / 1000000;
   localparam [31:0] N_32        = N;
   localparam [31:0] US_LIMIT_32 = CLKS_PER_US - 1;
@@ -142,7 +145,6 @@ module prenc_host_link #(
   localparam [7:0] REQ_WRITE  = 8'h04;
   localparam [7:0] ANS_DATA   = 8'h80;
   localparam [7:0] ANS_NACK   = 8'hFF;
-  localparam [2:0] KIND_LAST  = 3'd6;
   localparam [2:0] KIND_STAT  = 3'd4;
 
   // --- UART and framing -------------------------------------------------------
@@ -212,7 +214,7 @@ module prenc_host_link #(
   reg [15:0]  cal_data_reg;
 
   wire [2:0]  req_kind   = req_payload[2:0];
-  wire        kind_ok    = (req_payload[7:3] == 5'd0) && (req_kind <= KIND_LAST);
+  wire        kind_ok    = (req_payload[7:3] == 5'd0);   // kinds 0..7, all answered
   wire [31:0] req_period = {req_payload[15:8], req_payload[23:16],
                             req_payload[31:24], req_payload[39:32]};
   wire        can_start  = ~tx_busy & ~start_reg;
@@ -338,7 +340,7 @@ module prenc_host_link #(
   end
 
   // The answer, built from this clock's core outputs when start_reg is high.
-  wire [7:0] flags = {pos_valid, mode, direction, streaming, warning, 1'b0};
+  wire [7:0] flags = {pos_valid, mode, direction, streaming, |warnings, 1'b0};
   reg [15:0] abs16;
   reg [23:0] hyb24;
   reg [15:0] t1_16;
@@ -435,6 +437,18 @@ module prenc_host_link #(
         payload[119:112] = edge_interval2[15:8];
         payload[127:120] = edge_interval2[7:0];
         length = 8'd16;
+      end
+      ANS_DATA | 8'd7: begin
+        payload[55:48]   = abs16[15:8];
+        payload[63:56]   = abs16[7:0];
+        payload[71:64]   = track1_errors[15:8];
+        payload[79:72]   = track1_errors[7:0];
+        payload[87:80]   = track2_errors[15:8];
+        payload[95:88]   = track2_errors[7:0];
+        payload[103:96]  = sync_errors[15:8];
+        payload[111:104] = sync_errors[7:0];
+        payload[119:112] = {5'd0, warnings};
+        length = 8'd15;
       end
       default: begin  // NACK
         payload[55:48] = nack_code;

@@ -225,8 +225,65 @@ def describe(answer: Answer, bits: int) -> str:
         speed = "velocity not valid" if rpm is None else f"{rpm:+.3f} rpm"
         width = bits + 2 + v["fine_bits"]
         return f"fine {v['fine_position']} / {1 << width} = {angle_deg(answer, bits):.4f} deg  {speed}  {flags}"
+    if answer.kind == Kind.HEALTH:
+        warned = [name for bit, name in enumerate(("head 1", "head 2", "sync")) if v["warnings"] >> bit & 1]
+        return (f"health: at slot {v['position']}, errors track1 {v['track1_errors']}, track2 {v['track2_errors']}, "
+                f"sync {v['sync_errors']}, warnings {', '.join(warned) or 'none'}  {flags}")
     return (f"status: protocol v{v['version']}, N={v['bits']}, errors track1 {v['track1_errors']}, "
             f"track2 {v['track2_errors']}, sync {v['sync_errors']}, link {v['link_errors']}  {flags}")
+
+
+class CorrectionMap:
+    """Where on the disc the corrections happen, from streamed HEALTH answers: the
+    corrections that the error counters gained between two answers, placed at the slot
+    halfway between their positions (the shorter way round), in `regions` equal parts of
+    the disc. Head 1 reads the disc where the position is, head 2 half a turn further
+    (L/2); the sync track's illegal transitions are placed at the position. Intervals
+    in which the position was not valid at either end are left out (`skipped`)."""
+
+    SOURCES = ("head1", "head2", "sync")
+
+    def __init__(self, bits: int, regions: int = 32):
+        if not 1 <= regions <= 1 << bits:
+            raise HostError(f"regions must be 1..{1 << bits}, got {regions}")
+        self.bits, self.regions = bits, regions
+        self.counts = [[0] * regions for _ in self.SOURCES]
+        self.skipped = 0
+        self.last: tuple[int, ...] | None = None
+
+    def add(self, answer: Answer) -> None:
+        v = answer.values
+        now = (v["position"], v["track1_errors"], v["track2_errors"], v["sync_errors"])
+        if self.last is not None:
+            gained = [b - a if b >= a else b for a, b in zip(self.last[1:-1], now[1:])]  # b < a: cleared
+            if answer.valid and self.last[-1]:
+                turn = 1 << self.bits
+                moved = (now[0] - self.last[0] + turn // 2) % turn - turn // 2
+                middle = (self.last[0] + moved // 2) % turn
+                for k, count in enumerate(gained):
+                    where = (middle + (turn // 2 if k == 1 else 0)) % turn
+                    self.counts[k][where * self.regions // turn] += count
+            else:
+                self.skipped += sum(gained)
+        self.last = now + (answer.valid,)
+
+    def rows(self) -> list[dict]:
+        turn = 1 << self.bits
+        return [{"region": r, "first_slot": r * turn // self.regions, "last_slot": (r + 1) * turn // self.regions - 1,
+                 **{name: self.counts[k][r] for k, name in enumerate(self.SOURCES)}} for r in range(self.regions)]
+
+    def table(self) -> str:
+        peak = max(1, max(max(c) for c in self.counts))
+        lines = [f"{'slots':>11} {'degrees':>15} {'head 1':>7} {'head 2':>7} {'sync':>6}"]
+        for row in self.rows():
+            a, b = row["first_slot"], row["last_slot"]
+            deg = 360 / (1 << self.bits)
+            total = row["head1"] + row["head2"] + row["sync"]
+            bar = "#" * round(20 * max(row["head1"], row["head2"], row["sync"]) / peak) if total else ""
+            lines.append(f"{a:>5}-{b:<5} {a * deg:>7.1f}-{(b + 1) * deg:<7.1f} {row['head1']:>7} {row['head2']:>7} "
+                         f"{row['sync']:>6} {bar}")
+        lines.append(f"corrections while the position was not valid (not placed): {self.skipped}")
+        return "\n".join(lines)
 
 
 class SpeedMeter:
@@ -373,6 +430,36 @@ def cmd_log(args, out: TextIO | None = None, progress: TextIO | None = None) -> 
     out.write(f"wrote {rows} rows to {path}\n")
 
 
+def cmd_map(args, out: TextIO | None = None, progress: TextIO | None = None) -> None:
+    out, progress = out or sys.stdout, progress or sys.stderr
+    with Board.open(args.port, args.baud, args.timeout) as board:
+        board.check_version()
+        counts = CorrectionMap(board.bits, args.regions)
+        duration = args.duration if args.duration is not None else (None if args.count else 10.0)
+        t0 = time.monotonic()
+        answers = 0
+        try:
+            counts.add(board.start_stream(Kind.HEALTH, 1))
+            answers = 1
+            for answer in board.answers():
+                if isinstance(answer, Nack) or answer.kind != Kind.HEALTH:
+                    continue
+                counts.add(answer)
+                answers += 1
+                elapsed = time.monotonic() - t0
+                if (args.count and answers >= args.count) or (duration and elapsed >= duration):
+                    break
+        except KeyboardInterrupt:
+            pass
+        finally:
+            board.stop_stream()
+    progress.write(f"map: {answers} answers, crc errors {board.crc_errors}\n")
+    if args.json:
+        out.write(json.dumps({"bits": board.bits, "regions": counts.rows(), "skipped": counts.skipped}) + "\n")
+    else:
+        out.write(counts.table() + "\n")
+
+
 def cmd_plot(args, out: TextIO | None = None) -> None:
     out = out or sys.stdout
     path = Path(args.log)
@@ -454,6 +541,15 @@ def add_parser(sub) -> None:
     stop.add_argument("--duration", type=float, help="seconds to log")
     stop.add_argument("--count", type=int, help="readings to log")
     log.set_defaults(func=cmd_log)
+
+    where = cmds.add_parser("map", help="where on the disc the reader corrects its heads (streams HEALTH)")
+    link(where)
+    where.add_argument("--regions", type=int, default=32, help="parts of the disc (default 32)")
+    where.add_argument("--json", action="store_true", help="the counts as one JSON object")
+    span = where.add_mutually_exclusive_group()
+    span.add_argument("--duration", type=float, help="seconds to stream (default 10)")
+    span.add_argument("--count", type=int, help="answers to take instead")
+    where.set_defaults(func=cmd_map)
 
     plot = cmds.add_parser("plot", help="plot a log written by `prenc host log`")
     plot.add_argument("log", help="the CSV log")

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from enum import IntEnum
 
 SOF = 0xA5
-VERSION = 3
+VERSION = 4
 REQUEST_MAX_LEN = 5  # prenc_host_link's parser limit
 ANSWER_MAX_LEN = 16
 HEADER_LEN = 6  # FLAGS, SEQ, TIME[4]
@@ -44,6 +44,7 @@ class Kind(IntEnum):
     STATUS = 4
     FINE = 5
     EDGES = 6
+    HEALTH = 7
 
 
 ANSWER_DATA = 0x80
@@ -55,7 +56,7 @@ MODE_NAMES = {0: "ACQUIRE", 1: "NORMAL", 2: "REDUCED_1", 3: "REDUCED_2", 4: "INC
 
 # Data bytes after the header, per kind.
 DATA_LEN = {Kind.ABS: 2, Kind.HYBRID: 3, Kind.INCREMENTAL: 4, Kind.TRACKS: 5, Kind.STATUS: 10,
-            Kind.FINE: 10, Kind.EDGES: 10}
+            Kind.FINE: 10, Kind.EDGES: 10, Kind.HEALTH: 9}
 VELOCITY_FRAC = 32  # FINE's velocity: quarters per clock x 2^32
 
 
@@ -238,6 +239,10 @@ def decode(frame: Frame) -> Answer | Nack:
     elif kind == Kind.TRACKS:
         t1, t2, tf = struct.unpack(">HHB", data)
         values = {"track1": t1, "track2": t2, "track1_valid": bool(tf & 1), "track2_valid": bool(tf & 2)}
+    elif kind == Kind.HEALTH:
+        position, e1, e2, es, warnings = struct.unpack(">HHHHB", data)
+        values = {"position": position, "track1_errors": e1, "track2_errors": e2, "sync_errors": es,
+                  "warnings": warnings & 7}
     elif kind == Kind.EDGES:
         info = data[0]
         run = info & 3
@@ -271,6 +276,9 @@ def encode_answer(answer: Answer) -> bytes:
         data = struct.pack(">i", v["count"])
     elif answer.kind == Kind.TRACKS:
         data = struct.pack(">HHB", v["track1"], v["track2"], v["track1_valid"] | (v["track2_valid"] << 1))
+    elif answer.kind == Kind.HEALTH:
+        data = struct.pack(">HHHHB", v["position"], v["track1_errors"], v["track2_errors"], v["sync_errors"],
+                           v["warnings"])
     elif answer.kind == Kind.EDGES:
         info = (v["lost"] << 7) | (v["cw"] << 6) | (v["pos_valid"] << 5) | v["run"]
         intervals = list(v["intervals"]) + [0] * (3 - len(v["intervals"]))

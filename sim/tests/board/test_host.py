@@ -124,3 +124,28 @@ def test_calibrate_refuses_a_table_for_another_disc(board, tmp_path, capsys):
     assert main(["calibrate", "--port", board.port, "--load", str(table)]) == 1
     err = capsys.readouterr().err
     assert err.startswith("prenc calibrate: error: calibration table") and "N = 6, the reader has N = 10" in err
+
+
+def test_the_correction_map_places_each_heads_corrections_where_it_reads():
+    """Head 1's corrections at the slot between two answers' positions, head 2's half a
+    turn further; an interval without a valid position at both ends is not placed."""
+    from prenc.board.host import CorrectionMap
+
+    def health(position, t1, t2, sync, valid=True):
+        return Answer(Kind.HEALTH, valid, 1, 1, True, 0, 0, {"position": position, "track1_errors": t1,
+                                                            "track2_errors": t2, "sync_errors": sync,
+                                                            "warnings": 0})
+
+    m = CorrectionMap(bits=10, regions=32)
+    m.add(health(100, 0, 0, 0))
+    m.add(health(110, 2, 1, 0))        # middle slot 105: region 3; head 2 at 617: region 19
+    m.add(health(1020, 2, 1, 1))       # backwards across the zero? no: the shorter way is -114
+    m.add(health(1020, 5, 1, 1, valid=False))
+    m.add(health(30, 6, 1, 1))         # from an invalid answer: not placed
+    m.add(health(40, 7, 1, 1))         # 35: region 1
+    rows = m.rows()
+    assert rows[3]["head1"] == 2 and rows[19]["head2"] == 1 and rows[1]["head1"] == 1
+    # 110 -> 1020 the shorter way round is 110 -> -4 (1020): the middle is 53, region 1.
+    assert rows[1]["sync"] == 1
+    assert sum(r["head1"] for r in rows) == 3 and m.skipped == 4
+    assert "head 1" in m.table().splitlines()[0]

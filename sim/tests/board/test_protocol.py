@@ -31,8 +31,10 @@ def test_answers_round_trip(kind):
               Kind.FINE: {"fine_position": 0x3FFFF, "fine_bits": 6, "velocity": -641, "velocity_valid": True,
                           "interpolated": False, "clk_mhz": 30},
               Kind.EDGES: {"lost": False, "cw": True, "pos_valid": True, "run": 2, "edge": 4095,
-                           "intervals": [65535, 1]}}[kind]
-    answer = Answer(kind, True, 2, 1, False, 7, 123456789, values)
+                           "intervals": [65535, 1]},
+              Kind.HEALTH: {"position": 1000, "track1_errors": 17, "track2_errors": 0, "sync_errors": 65535,
+                            "warnings": 5}}[kind]
+    answer = Answer(kind, True, 2, 1, False, 7, 123456789, values, warning=kind == Kind.HEALTH)
     frames = FrameParser().feed(protocol.encode_answer(answer))
     assert [protocol.decode(f) for f in frames] == [answer]
 

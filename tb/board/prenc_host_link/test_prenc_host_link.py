@@ -41,7 +41,7 @@ class Link:
     def drive(self, r: random.Random) -> dict:
         n = self.n
         values = {"pos_abs": r.randrange(1 << n), "pos_hyb": r.randrange(1 << (n + 2)), "pos_valid": r.randrange(2),
-                  "mode": r.randrange(5), "direction": r.randrange(2), "warning": r.randrange(2), "incremental": r.randrange(1 << 32),
+                  "mode": r.randrange(5), "direction": r.randrange(2), "warnings": r.randrange(8), "incremental": r.randrange(1 << 32),
                   "track1_pos": r.randrange(1 << n), "track1_valid": r.randrange(2),
                   "track2_pos": r.randrange(1 << n), "track2_valid": r.randrange(2),
                   "track1_errors": r.randrange(1 << 16), "track2_errors": r.randrange(1 << 16),
@@ -86,6 +86,9 @@ def expected_values(kind: Kind, v: dict, n: int, link_errors: int, clk_mhz: int 
         w, info = v["velocity"], v["fine_info"]
         return {"fine_position": v["fine_pos"], "fine_bits": info & 15, "velocity": w - (1 << 32) if w >> 31 else w,
                 "velocity_valid": bool(info & 16), "interpolated": bool(info & 32), "clk_mhz": clk_mhz}
+    if kind == Kind.HEALTH:
+        return {"position": v["pos_abs"], "track1_errors": v["track1_errors"], "track2_errors": v["track2_errors"],
+                "sync_errors": v["sync_errors"], "warnings": v["warnings"]}
     if kind == Kind.EDGES:
         intervals = [v["edge_interval0"], v["edge_interval1"], v["edge_interval2"]][:v["edge_run"]]
         return {"lost": bool(v["edge_lost"]), "cw": bool(v["edge_cw"]), "pos_valid": bool(v["edge_valid"]),
@@ -98,7 +101,7 @@ def check_flags(answer: Answer, v: dict, streaming: bool) -> None:
     assert answer.valid == bool(v["pos_valid"])
     assert answer.mode == v["mode"]
     assert answer.direction == v["direction"]
-    assert answer.warning == bool(v["warning"])
+    assert answer.warning == bool(v["warnings"])
     assert answer.streaming == streaming
 
 
@@ -181,7 +184,7 @@ async def bad_requests_get_nacks(dut):
     link, _ = await setup(dut)
     cases = [(protocol.encode(0x42), 1, 0x42),                               # unknown type
              (protocol.encode(protocol.Request.READ, b"\x00\x00"), 2, 1),     # READ with 2 bytes
-             (protocol.encode(protocol.Request.READ, b"\x07"), 3, 1),         # unknown kind
+             (protocol.encode(protocol.Request.READ, b"\x08"), 3, 1),         # unknown kind
              (protocol.encode(protocol.Request.STREAM, b"\x00"), 2, 2),       # STREAM too short
              (protocol.encode(protocol.Request.CLEAR, b"\x00"), 2, 3)]        # CLEAR with data
     for request, code, of in cases:
