@@ -17,7 +17,8 @@
 //   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
 //   No UVW: the UP5K has no pins for it beside the LEDs, nor room (97 % full with it).
-//   With CAL = 1 neither SPI nor ABI: the table and the edges' capture take their room.
+//   With CAL = 1 neither SPI nor ABI nor the warning before a failure (prenc_health: nW
+//   only in a reduced mode): the table and the edges' capture take their room.
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board. The UP5K's 30 block
 // RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity;
@@ -80,7 +81,8 @@ module prenc_icebreaker #(
 );
 
   localparam integer CLK_HZ = 30000000;
-  // With the calibration table the UP5K has no room for the drives' SPI and ABI.
+  // With the calibration table the UP5K has no room for the drives' SPI and ABI, nor for
+  // the warning.
   localparam integer DRIVES = (CAL == 1) ? 0 : 1;
 
   wire clk;
@@ -148,6 +150,7 @@ module prenc_icebreaker #(
     .ABI_EDGE_NS     (ABI_EDGE_NS),
     .SPI             (DRIVES),
     .ABI             (DRIVES),
+    .HEALTH          (DRIVES),
     .UVW             (0)
   ) u_board (
     .clk             (clk),

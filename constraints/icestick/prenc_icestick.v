@@ -16,7 +16,8 @@
 // What the HX1K holds (docs/guide/synthesis.md): the core, the multi-turn count, SSI and
 // BiSS-C, with the core's HYPOTHESES = 0 (a missed quadrature state drops the position
 // until the next lock; the goal table's price is in bench section 4b). No fine position
-// or velocity (prenc_fine, FINE = 0): SSI and BiSS-C send pos_hyb, N + 2 bits.
+// or velocity (prenc_fine, FINE = 0): SSI and BiSS-C send pos_hyb, N + 2 bits. No
+// warning before a failure (prenc_health, HEALTH = 0): nW only in a reduced mode.
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board; HOST_LINK and HYPOTHESES
 // as prenc_board and prenc_core, with the iCEstick's defaults (0 and 0). The HX1K's 16
@@ -109,6 +110,7 @@ module prenc_icestick #(
     .HOST_LINK  (HOST_LINK),
     .HYPOTHESES (HYPOTHESES),
     .FINE       (0),
+    .HEALTH     (0),
     .SPI        (0),
     .ABI        (0),
     .UVW        (0)

@@ -75,6 +75,8 @@
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
 //   CAL_FILE      with CAL = 1: the table ($readmemh, prenc.cal.table's format, checked in
 //                 simulation); "" : all zero until written
+//   HEALTH        1: the warning before a failure is built (prenc_health; default); 0:
+//                 not (nW only in a reduced mode: the iCEstick's HX1K has no room)
 //   WARN_SLOTS, WARN_BURST   prenc_health's: a source warns when its corrections come
 //                 more often than one per WARN_SLOTS slots of travel (128) or WARN_BURST
 //                 (8) at once
@@ -131,6 +133,7 @@ module prenc_board #(
   parameter integer EXTRAPOLATE     = 1,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
+  parameter integer HEALTH          = 1,
   parameter integer WARN_SLOTS      = 128,
   parameter integer WARN_BURST      = 8,
   parameter integer LOCK_BOTH       = (N < 8) ? 3 : 2,
@@ -202,6 +205,10 @@ module prenc_board #(
     if (HOST_LINK < 0 || HOST_LINK > 1) begin : g_bad_host_link
       initial $display("ERROR: %m: parameter HOST_LINK = %0d must be 0 or 1", HOST_LINK);
       prenc_board_parameter_HOST_LINK_must_be_0_or_1 u_stop ();
+    end
+    if (HEALTH < 0 || HEALTH > 1) begin : g_bad_health
+      initial $display("ERROR: %m: parameter HEALTH = %0d must be 0 or 1", HEALTH);
+      prenc_board_parameter_HEALTH_must_be_0_or_1 u_stop ();
     end
     if (EDGE_CAPTURE < 0 || EDGE_CAPTURE > 1) begin : g_bad_edge_capture
       initial $display("ERROR: %m: parameter EDGE_CAPTURE = %0d must be 0 or 1", EDGE_CAPTURE);
@@ -280,19 +287,27 @@ module prenc_board #(
   wire [2:0] warnings;
   wire       warning;
 
-  prenc_health #(
-    .WARN_SLOTS (WARN_SLOTS),
-    .WARN_BURST (WARN_BURST)
-  ) u_health (
-    .clk          (clk),
-    .rst          (rst),
-    .step         (sync_step),
-    .track1_error (track1_error),
-    .track2_error (track2_error),
-    .sync_illegal (sync_illegal),
-    .warnings     (warnings),
-    .warning      (warning)
-  );
+  generate
+    if (HEALTH == 1) begin : g_health
+      prenc_health #(
+        .WARN_SLOTS (WARN_SLOTS),
+        .WARN_BURST (WARN_BURST)
+      ) u_health (
+        .clk          (clk),
+        .rst          (rst),
+        .step         (sync_step),
+        .track1_error (track1_error),
+        .track2_error (track2_error),
+        .sync_illegal (sync_illegal),
+        .warnings     (warnings),
+        .warning      (warning)
+      );
+    end else begin : g_no_health
+      assign warnings = 3'b000;
+      assign warning  = 1'b0;
+      wire unused_health = &{1'b0, track1_error, track2_error};
+    end
+  endgenerate
 
   prenc_core #(
     .N           (N),

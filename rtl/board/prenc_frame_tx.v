@@ -53,11 +53,13 @@ module prenc_frame_tx #(
   reg [7:0]           index;     // byte of the frame being offered
   reg [7:0]           type_reg;
   reg [7:0]           len_reg;
+  reg [7:0]           crc_hi_at; // index of the CRC's high byte: LEN + 3
+  reg [7:0]           last;      // index of the CRC's low byte: LEN + 4
   reg [8*MAX_LEN-1:0] payload;
   reg [15:0]          crc;
   reg [7:0]           current;
 
-  wire [7:0]  last = len_reg + 8'd4;  // index of the CRC's low byte
+  wire [7:0]  len_clipped = (frame_len > MAX_LEN_8) ? MAX_LEN_8 : frame_len;
   wire [15:0] crc_next;
 
   always @* begin
@@ -67,7 +69,7 @@ module prenc_frame_tx #(
       current = type_reg;
     end else if (index == 8'd2) begin
       current = len_reg;
-    end else if (index == last - 8'd1) begin
+    end else if (index == crc_hi_at) begin
       current = crc[15:8];
     end else if (index == last) begin
       current = crc[7:0];
@@ -85,19 +87,21 @@ module prenc_frame_tx #(
   always @(posedge clk) begin
     if (!busy_reg) begin
       if (start) begin
-        busy_reg <= 1'b1;
-        index    <= 8'd0;
-        type_reg <= frame_type;
-        len_reg  <= (frame_len > MAX_LEN_8) ? MAX_LEN_8 : frame_len;
-        payload  <= frame_payload;
-        crc      <= 16'hFFFF;
+        busy_reg  <= 1'b1;
+        index     <= 8'd0;
+        type_reg  <= frame_type;
+        len_reg   <= len_clipped;
+        crc_hi_at <= len_clipped + 8'd3;
+        last      <= len_clipped + 8'd4;
+        payload   <= frame_payload;
+        crc       <= 16'hFFFF;
       end
     end else if (byte_ready) begin
       index <= index + 8'd1;
-      if (index != 8'd0 && index < last - 8'd1) begin
+      if (index != 8'd0 && index < crc_hi_at) begin
         crc <= crc_next;
       end
-      if (index > 8'd2 && index < last - 8'd1) begin
+      if (index > 8'd2 && index < crc_hi_at) begin
         payload <= payload >> 8;
       end
       if (index == last) begin

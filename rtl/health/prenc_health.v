@@ -59,27 +59,40 @@ module prenc_health #(
     end
   endgenerate
 
-  localparam integer LW      = $clog2(4 * WARN_SLOTS * WARN_BURST + 1);   // level bits
-  localparam [31:0]  LIMIT32 = 4 * WARN_SLOTS * WARN_BURST;   // 4 .. 2^20 quarters
+  localparam integer LW       = $clog2(4 * WARN_SLOTS * WARN_BURST + 1);   // level bits
+  localparam [31:0]  LIMIT32  = 4 * WARN_SLOTS * WARN_BURST;   // 4 .. 2^20 quarters
   localparam [31:0]  WEIGHT32 = 4 * WARN_SLOTS;               // a correction, in quarters
-  localparam [LW:0]  FULL    = LIMIT32[LW:0];
-  localparam [LW:0]  WEIGHT  = WEIGHT32[LW:0];
+  localparam [LW-1:0] LIMIT   = LIMIT32[LW-1:0];
+  localparam [LW-1:0] WEIGHT  = WEIGHT32[LW-1:0];
+  localparam [LW-1:0] FILLS   = LIMIT - WEIGHT;   // a correction from here on fills the bucket
+  localparam [LW-1:0] ONE     = {{(LW - 1){1'b0}}, 1'b1};
 
   wire [2:0] event_in = {sync_illegal, track2_error, track1_error};
   reg  [LW-1:0] level [0:2];
   reg  [2:0]    warn;
 
+  // One source's next level: + WEIGHT on a correction, capped at LIMIT; - 1 on a quarter
+  // step while it is above 0. The comparisons are with constants on the level as it is,
+  // so one adder is all that lies between the registers.
   genvar k;
   for (k = 0; k < 3; k = k + 1) begin : g_source
-    wire [LW:0]   total   = {1'b0, level[k]} + (event_in[k] ? WEIGHT : {(LW + 1){1'b0}});
-    wire [LW-1:0] capped  = (total >= FULL) ? FULL[LW-1:0] : total[LW-1:0];
-    wire [LW-1:0] drained = (step && capped != 0) ? capped - 1'b1 : capped;
+    wire high;   // a correction now fills the bucket (WARN_BURST = 1: any)
+    if (WARN_BURST == 1) begin : g_any
+      assign high = 1'b1;
+    end else begin : g_above
+      assign high = level[k] >= FILLS;
+    end
+    wire fills  = event_in[k] && high;
+    wire drains = step && (event_in[k] || level[k] != {LW{1'b0}});
+    wire empty  = !event_in[k] && (level[k] == {LW{1'b0}} || (level[k] == ONE && step));
+    wire [LW-1:0] added = level[k] + (event_in[k] ? WEIGHT : {LW{1'b0}});
     always @(posedge clk) begin
-      level[k] <= drained;
-      if (total >= FULL) begin
-        warn[k] <= 1'b1;
-      end else if (drained == 0) begin
-        warn[k] <= 1'b0;
+      if (fills) begin
+        level[k] <= drains ? LIMIT - ONE : LIMIT;
+        warn[k]  <= 1'b1;
+      end else begin
+        level[k] <= drains ? added - ONE : added;
+        if (empty) warn[k] <= 1'b0;
       end
       if (rst) begin
         level[k] <= {LW{1'b0}};

@@ -281,7 +281,7 @@ class CorrectionMap:
             total = row["head1"] + row["head2"] + row["sync"]
             bar = "#" * round(20 * max(row["head1"], row["head2"], row["sync"]) / peak) if total else ""
             lines.append(f"{a:>5}-{b:<5} {a * deg:>7.1f}-{(b + 1) * deg:<7.1f} {row['head1']:>7} {row['head2']:>7} "
-                         f"{row['sync']:>6} {bar}")
+                         f"{row['sync']:>6} {bar}".rstrip())
         lines.append(f"corrections while the position was not valid (not placed): {self.skipped}")
         return "\n".join(lines)
 

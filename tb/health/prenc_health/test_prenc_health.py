@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_health against its model, prenc.health.Health, clock for clock.
 
-Random corrections of the three sources, in phases: quiet travel, sparse corrections
+WARN_SLOTS = 8, WARN_BURST = 3, and 1, 1 (every correction warns). Random corrections
+of the three sources, in phases: quiet travel, sparse corrections
 (below one per WARN_SLOTS slots), dense ones, bursts at a stop, and resets. Every clock
 the warnings equal the model's; every source both warns and stops warning.
 """
@@ -17,7 +18,6 @@ from prenc.health.health import Health
 from runner import SIMULATORS, run
 
 TOPLEVEL = "prenc_health"
-SLOTS, BURST = 8, 3
 
 
 @cocotb.test()
@@ -26,7 +26,7 @@ async def equals_its_model(dut):
     for name in ("step", "track1_error", "track2_error", "sync_illegal"):
         getattr(dut, name).value = 0
     await start_clock_and_reset(dut, 3)
-    model = Health(SLOTS, BURST)
+    model = Health(int(dut.WARN_SLOTS.value), int(dut.WARN_BURST.value))
     rose, fell, last = [0, 0, 0], [0, 0, 0], [0, 0, 0]
     step_p = event_p = 0.0
     for clock in range(60_000):
@@ -53,6 +53,7 @@ async def equals_its_model(dut):
     assert all(rose) and all(fell)
 
 
+@pytest.mark.parametrize("slots, burst", [(8, 3), (1, 1)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_health(simulator):
-    run(__file__, TOPLEVEL, simulator, parameters={"WARN_SLOTS": SLOTS, "WARN_BURST": BURST})
+def test_prenc_health(simulator, slots, burst):
+    run(__file__, TOPLEVEL, simulator, parameters={"WARN_SLOTS": slots, "WARN_BURST": burst})
