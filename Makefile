@@ -17,7 +17,8 @@
 #   make mutate  mutants of each proven block, and how many the proofs kill
 #   make soak [ARGS="--bits 10 --filter 0 --seeds 1..500"]
 #                many random draws of the end-to-end scenarios through the reader
-#                model, as CI judges the RTL (scripts/soak.py --help)
+#                model, as CI judges the RTL (scripts/soak.py --help);
+#                ARGS="--instrument --seeds 1..100": through the whole instrument
 #   make litex-soc BOARD=sim|ulx3s|icebreaker
 #                the LiteX example: VexRiscv + prenc_wb + the firmware of sw/litex/, its
 #                Verilog for simulation, or a board's bitstream and its report

@@ -6,6 +6,13 @@
     python scripts/soak.py --bits 10 --filter 0 --seeds 1000..1500
     python scripts/soak.py --bits 8 --filter 2 --seeds 809969825 --scenario glitches
     python scripts/soak.py --no-hypotheses --bits 10 --filter 0
+    python scripts/soak.py --instrument --seeds 1..50           # the whole instrument
+
+With --instrument each seed is one draw of motion, faults, sensor noise and disc
+printing through the reader, the fine position and the velocity (N = 10, FILTER = 2;
+prenc.virtual.instrument_soak), judged on every clock: no wrong valid position, the
+fine position within its documented bound of the core's quarter, the velocity 0 or of
+the last step's sign and never motion at a stop. About 6 s a draw on one core.
 
 CI draws one seed per scenario on every run, so a change can pass CI and fail on a
 later draw. Run this before pushing a change to the reader, the judge or the
@@ -48,6 +55,25 @@ def seed_list(text: str) -> list[int]:
     return seeds
 
 
+def instrument(seeds: list[int], jobs: int) -> int:
+    """The instrument soak: a line per draw, a summary; 1 if any draw failed."""
+    import math
+
+    from prenc.virtual.instrument_soak import soak_instrument
+
+    start = time.monotonic()
+    results = soak_instrument(seeds, jobs)
+    failed = 0
+    for r in results:
+        verdict = "ok" if not r.failures else "FAILED: " + "; ".join(r.failures[:3])
+        vel = "-" if math.isnan(r.velocity_rms) else f"{r.velocity_rms:.2f} %"
+        print(f"seed {r.seed}: {r.label}; {r.clocks} clocks; fine position {r.fine_rms:.4f} / {r.fine_max:.3f} "
+              f"slot (RMS / max), velocity at steady speeds {vel} RMS: {verdict}")
+        failed += bool(r.failures)
+    print(f"instrument soak: {len(results)} draws, {failed} failed, {time.monotonic() - start:.0f} s")
+    return 1 if failed else 0
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--bits", type=int, default=8, metavar="N", help="code word length, 4..16 (default 8)")
@@ -58,7 +84,14 @@ def main(argv: list[str] | None = None) -> int:
                         help="only this scenario (repeatable; default every one)")
     parser.add_argument("--no-hypotheses", action="store_true", help="the reader built with HYPOTHESES = 0")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="processes (default: every core)")
+    parser.add_argument("--instrument", action="store_true",
+                        help="draws through the whole instrument (N = 10, FILTER = 2; --bits, --filter, "
+                             "--scenario and --no-hypotheses do not apply)")
     args = parser.parse_args(argv)
+    if args.instrument:
+        if args.jobs < 1:
+            parser.error(f"--jobs {args.jobs} must be 1 or more")
+        return instrument(args.seeds, args.jobs)
     if not 4 <= args.bits <= 16:
         parser.error(f"--bits {args.bits} is out of range 4..16")
     if not 0 <= args.filter <= 16:

@@ -68,35 +68,37 @@ module prenc_health #(
   localparam [LW-1:0] ONE     = {{(LW - 1){1'b0}}, 1'b1};
 
   wire [2:0] event_in = {sync_illegal, track2_error, track1_error};
-  reg  [LW-1:0] level [0:2];
-  reg  [2:0]    warn;
+  wire [2:0] warn;
 
   // One source's next level: + WEIGHT on a correction, capped at LIMIT; - 1 on a quarter
   // step while it is above 0. The comparisons are with constants on the level as it is,
   // so one adder is all that lies between the registers.
   genvar k;
   for (k = 0; k < 3; k = k + 1) begin : g_source
+    reg [LW-1:0] level;
+    reg          warn_reg;
     wire high;   // a correction now fills the bucket (WARN_BURST = 1: any)
     if (WARN_BURST == 1) begin : g_any
       assign high = 1'b1;
     end else begin : g_above
-      assign high = level[k] >= FILLS;
+      assign high = level >= FILLS;
     end
     wire fills  = event_in[k] && high;
-    wire drains = step && (event_in[k] || level[k] != {LW{1'b0}});
-    wire empty  = !event_in[k] && (level[k] == {LW{1'b0}} || (level[k] == ONE && step));
-    wire [LW-1:0] added = level[k] + (event_in[k] ? WEIGHT : {LW{1'b0}});
+    wire drains = step && (event_in[k] || level != {LW{1'b0}});
+    wire empty  = !event_in[k] && (level == {LW{1'b0}} || (level == ONE && step));
+    wire [LW-1:0] added = level + (event_in[k] ? WEIGHT : {LW{1'b0}});
+    assign warn[k] = warn_reg;
     always @(posedge clk) begin
       if (fills) begin
-        level[k] <= drains ? LIMIT - ONE : LIMIT;
-        warn[k]  <= 1'b1;
+        level    <= drains ? LIMIT - ONE : LIMIT;
+        warn_reg <= 1'b1;
       end else begin
-        level[k] <= drains ? added - ONE : added;
-        if (empty) warn[k] <= 1'b0;
+        level    <= drains ? added - ONE : added;
+        if (empty) warn_reg <= 1'b0;
       end
       if (rst) begin
-        level[k] <= {LW{1'b0}};
-        warn[k]  <= 1'b0;
+        level    <= {LW{1'b0}};
+        warn_reg <= 1'b0;
       end
     end
   end

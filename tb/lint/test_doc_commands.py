@@ -48,6 +48,8 @@ COVERED = [
     (r"\.venv/bin/prenc host log +--port \S+ --out \S+ --rate 1000 --count 500",
      "tb/board/prenc_board/test_prenc_board.py", ['"log"', '"--out"', '"--rate"', '"--count"']),
     (r"\.venv/bin/prenc host plot +\S+ --out \S+", "tb/board/prenc_board/test_prenc_board.py", ['"plot"', '"--out"']),
+    (r"\.venv/bin/prenc host map +--port \S+ --regions 32", "tb/board/prenc_board/test_prenc_board_map.py",
+     ['"map"', '"--regions"']),
     (r"\.venv/bin/prenc calibrate --port \S+ --out \S+ --apply", "tb/board/prenc_board/test_calibrate_virtual_board.py",
      ['"calibrate"', '"--port"', '"--out"', '"--apply"']),
     (r"fusesoc library add prenc \S+", "tb/lint/test_fusesoc.py", ['"library", "add"']),
