@@ -38,6 +38,8 @@
 //   BAUD          UART baud rate (default 115200; CLK_HZ / BAUD >= 4, within 2 %)
 //   SSI_HYBRID    1: SSI sends pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   SSI_MONOFLOP_US   SSI monoflop time in microseconds (default 20)
+//   SSI_WARNING   1: the SSI frame ends with the warning bit after the error bit (1: the
+//                 warning; docs/health.md); 0: position and error bit only (default)
 //   BISS_MT_BITS  BiSS-C multi-turn bits, 0..24 (default 12; 0: single-turn only)
 //   BISS_HYBRID   1: BiSS-C single-turn is pos_hyb (N+2 bits); 0: pos_abs (N bits)
 //   BISS_TIMEOUT_US   BiSS-C timeout in microseconds (default 20; longer than half a
@@ -112,6 +114,7 @@ module prenc_board #(
   parameter integer BAUD            = 115200,
   parameter integer SSI_HYBRID      = 1,
   parameter integer SSI_MONOFLOP_US = 20,
+  parameter integer SSI_WARNING     = 0,
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_HYBRID     = 1,
   parameter integer BISS_TIMEOUT_US = 20,
@@ -205,6 +208,10 @@ module prenc_board #(
     if (HOST_LINK < 0 || HOST_LINK > 1) begin : g_bad_host_link
       initial $display("ERROR: %m: parameter HOST_LINK = %0d must be 0 or 1", HOST_LINK);
       prenc_board_parameter_HOST_LINK_must_be_0_or_1 u_stop ();
+    end
+    if (SSI_WARNING < 0 || SSI_WARNING > 1) begin : g_bad_ssi_warning
+      initial $display("ERROR: %m: parameter SSI_WARNING = %0d must be 0 or 1", SSI_WARNING);
+      prenc_board_parameter_SSI_WARNING_must_be_0_or_1 u_stop ();
     end
     if (HEALTH < 0 || HEALTH > 1) begin : g_bad_health
       initial $display("ERROR: %m: parameter HEALTH = %0d must be 0 or 1", HEALTH);
@@ -563,12 +570,14 @@ module prenc_board #(
   prenc_ssi #(
     .WIDTH     (SSI_WIDTH),
     .ERROR_BIT (1),
+    .WARN_BIT  (SSI_WARNING),
     .MONOFLOP  (SSI_MONOFLOP_US * (CLK_HZ / 1000000))
   ) u_ssi (
     .clk      (clk),
     .rst      (rst),
     .position (ssi_position),
     .valid    (fine_valid_d),
+    .warn     (warning),
     .gray     (ssi_gray),
     .ssi_clk  (ssi_clk),
     .ssi_data (ssi_data),

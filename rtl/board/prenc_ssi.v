@@ -5,14 +5,15 @@
 // (ssi_data, idle high):
 //
 //   ssi_clk  ‾‾‾‾\__/‾‾\__/‾‾\__ ... __/‾‾\__/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾
-//   ssi_data ‾‾‾‾‾‾‾‾| MSB | ... |  LSB | ERR |_____ monoflop ______/‾‾‾‾‾
+//   ssi_data ‾‾‾‾‾‾‾‾| MSB | ... |  LSB | ERR |(WRN)|___ monoflop ___/‾‾‾‾‾
 //                ^ first falling edge: the position and its error bit are latched
 //
 // - The first falling edge latches `position` (Gray-coded when `gray` is high) and
 //   the error bit (1 when `valid` is low: the position must not be used).
-// - Each rising edge puts the next bit on ssi_data, MSB first, the error bit last
-//   (ERROR_BIT = 1); the controller samples on the falling edges, so a frame of
-//   B bits takes B + 1 clock pulses.
+// - Each rising edge puts the next bit on ssi_data, MSB first, the error bit after the
+//   position (ERROR_BIT = 1), and with WARN_BIT = 1 the warning bit last (1: the
+//   warning, prenc_health's); the controller samples on the falling edges, so a frame
+//   of B bits takes B + 1 clock pulses.
 // - After the last bit, and on any further clock pulse, ssi_data is low; when the
 //   clock has stayed high for the monoflop time (MONOFLOP clocks), ssi_data goes
 //   high again and the next falling edge latches a new position. A frame that
@@ -27,11 +28,13 @@
 // Parameters
 //   WIDTH      position bits, 1..32
 //   ERROR_BIT  1: append the error bit; 0: position bits only
+//   WARN_BIT   1: append the warning bit after the error bit (needs ERROR_BIT = 1); 0: not
 //   MONOFLOP   monoflop time in clocks, >= 2 (typically 20 us)
 //
 // Ports
 //   clk, rst          one clock; synchronous active-high reset
 //   position, valid   what is latched
+//   warn              the warning, latched with them (used with WARN_BIT = 1)
 //   gray              1: Gray code, 0: binary (sampled at the latch)
 //   ssi_clk           the controller's clock (asynchronous)
 //   ssi_data          the data line
@@ -44,12 +47,14 @@
 module prenc_ssi #(
   parameter integer WIDTH     = 12,
   parameter integer ERROR_BIT = 1,
+  parameter integer WARN_BIT  = 0,
   parameter integer MONOFLOP  = 480
 ) (
   input  wire             clk,
   input  wire             rst,
   input  wire [WIDTH-1:0] position,
   input  wire             valid,
+  input  wire             warn,
   input  wire             gray,
   input  wire             ssi_clk,
   output wire             ssi_data,
@@ -65,13 +70,19 @@ module prenc_ssi #(
       initial $display("ERROR: %m: parameter ERROR_BIT = %0d must be 0 or 1", ERROR_BIT);
       prenc_ssi_parameter_ERROR_BIT_must_be_0_or_1 u_stop ();
     end
+    if (WARN_BIT < 0 || WARN_BIT > 1 || (WARN_BIT == 1 && ERROR_BIT != 1)) begin : g_bad_warn_bit
+      initial $display("ERROR: %m: parameter WARN_BIT = %0d must be 0, or 1 with ERROR_BIT = 1",
+                       WARN_BIT);
+      prenc_ssi_parameter_WARN_BIT_must_be_0_or_1_with_ERROR_BIT u_stop ();
+    end
     if (MONOFLOP < 2 || MONOFLOP > 16777215) begin : g_bad_monoflop
       initial $display("ERROR: %m: parameter MONOFLOP = %0d is out of range 2..16777215", MONOFLOP);
       prenc_ssi_parameter_MONOFLOP_out_of_range_2_to_16777215 u_stop ();
     end
   endgenerate
 
-  localparam integer BITS = WIDTH + 1;  // the shift register always has room for the error bit
+  // The shift register always has room for the error bit.
+  localparam integer BITS = WIDTH + 1 + ((WARN_BIT == 1) ? 1 : 0);
   localparam [31:0] MONO_32 = MONOFLOP - 1;
   localparam [23:0] MONO    = MONO_32[23:0];
 
@@ -87,7 +98,20 @@ module prenc_ssi #(
   wire rise = ~clk_q3 & clk_q2;
 
   wire [WIDTH-1:0] coded = gray ? (position ^ (position >> 1)) : position;
-  wire [BITS-1:0]  frame = (ERROR_BIT == 1) ? {coded, ~valid} : {1'b0, coded};
+  wire [BITS-1:0]  frame;
+  generate
+    if (WARN_BIT == 1) begin : g_frame_warn
+      assign frame = {coded, ~valid, warn};
+    end else if (ERROR_BIT == 1) begin : g_frame_error
+      assign frame = {coded, ~valid};
+    end else begin : g_frame_position
+      assign frame = {1'b0, coded};
+      wire unused_frame = &{1'b0, valid, warn};
+    end
+    if (WARN_BIT == 0 && ERROR_BIT == 1) begin : g_no_warn
+      wire unused_warn = &{1'b0, warn};
+    end
+  endgenerate
 
   always @(posedge clk) begin
     clk_q1 <= ssi_clk;
@@ -149,10 +173,12 @@ module prenc_ssi #(
     if (rst) f_still <= 24'd0;
   end
   // The frame as the datasheet of SSI says, written here: the position in Gray code
-  // (p ^ p >> 1) or binary, MSB first, then the error bit (1 = not valid).
+  // (p ^ p >> 1) or binary, MSB first, then the error bit (1 = not valid), then with
+  // WARN_BIT the warning bit.
   reg [BITS-1:0] f_code;
   always @(*) begin
-    f_code = {gray ? (position ^ (position >> 1)) : position, ~valid};
+    if (WARN_BIT == 1) f_code = {gray ? (position ^ (position >> 1)) : position, ~valid, warn};
+    else f_code = {gray ? (position ^ (position >> 1)) : position, ~valid};
     if (ERROR_BIT == 0) f_code = {1'b0, f_code[BITS-1:1]};
   end
   // ssi_clk as sampled at the last three clock edges (f_raw[0] the newest): the

@@ -113,6 +113,7 @@ module prenc_matrix_encoder #(
     .rst      (rst),
     .position (position_reg),
     .valid    (ok),
+    .warn     (1'b0),
     .gray     (gray),
     .ssi_clk  (ssi_clk),
     .ssi_data (ssi_data),

@@ -9,7 +9,9 @@ turns at 30,000 rpm (N = 10 at 30 MHz, 58.6 clocks a slot).
 - A disc getting dirty: from clock 50,000 one more slot of track 1 reads inverted every
   4,000 clocks (68 slots of travel). The warning rises, and frames carry nW = 0, while
   the reader is still in its normal mode with both tracks (before it has to drop
-  track 1) and the position is valid in every frame.
+  track 1) and the position is valid in every frame. An SSI master reads beside it
+  (the board built with SSI_WARNING = 1): the frame's last bit is the warning, 0 in
+  every frame that starts before it rises and 1 in every frame after.
 
 In both, every clock the board's warnings equal prenc.health.Health's fed with the
 core's own corrections and steps of the clock before (the block itself is held to the
@@ -93,6 +95,25 @@ async def read_frames(dut, watch: Watch, end: int) -> tuple[int, int]:
     return frames, warned
 
 
+async def read_ssi(dut, frames: list, end: int) -> None:
+    """An SSI master at 1 MHz (30 clocks a bit), a frame every 60 us until `end`:
+    (the clock the frame started, its bits) for each."""
+    half_ns = 15 * PERIOD_NS
+    width = len(dut.u_ssi.position)
+    dut.ssi_gray.value = 0
+    while now() < end:
+        start, bits = now(), []
+        for k in range(width + 4):      # the position, the error and warning bits, the line low
+            dut.ssi_clk.value = 0
+            if k > 0:
+                bits.append(int(dut.ssi_data.value))
+            await Timer(half_ns, unit="ns")
+            dut.ssi_clk.value = 1
+            await Timer(half_ns, unit="ns")
+        frames.append((start, bits))
+        await Timer(60_000, unit="ns")
+
+
 def theta_at(clocks: np.ndarray) -> np.ndarray:
     return 17.3 + np.asarray(clocks, dtype=np.float64) * SLOTS_PER_CLOCK
 
@@ -122,6 +143,8 @@ async def a_disc_getting_dirty_warns_before_a_track_is_dropped(dut):
 
     cocotb.start_soon(drive_encoder(dut, theta_at, dirt, Disc(N)))
     watch = Watch(dut)
+    ssi_frames: list = []
+    cocotb.start_soon(read_ssi(dut, ssi_frames, start + 240_000))
     frames, warned = await read_frames(dut, watch, start + 250_000)
     spots = GrowingDirt(1, DIRT_EVERY, DIRT_START).spots(watch.first_warning or 0)
     dut._log.info("dirty disc: %d frames, %d with nW = 0; the warning at clock %s with %d dirty slots "
@@ -131,9 +154,16 @@ async def a_disc_getting_dirty_warns_before_a_track_is_dropped(dut):
     assert watch.first_warning is not None and watch.mode_at_warning == 1
     assert watch.first_reduced is None or watch.first_warning < watch.first_reduced
     assert warned > 10 and frames - warned > 10
+    # SSI: the warning bit, the frame's last but one sampled bit (the last is the line low).
+    before = [bits[-2] for s, bits in ssi_frames if s < watch.first_warning - 10]
+    after = [bits[-2] for s, bits in ssi_frames if s > watch.first_warning + 10]
+    dut._log.info("SSI: %d frames before the warning, %d after", len(before), len(after))
+    assert len(before) >= 3 and len(after) > 10 and not any(before) and all(after)
+    assert all(bits[-1] == 0 for _, bits in ssi_frames)
+    assert all(bits[-3] == 0 for s, bits in ssi_frames if watch.first_valid and s > watch.first_valid + 2_000)
 
 
 def test_prenc_board_health():
     run(__file__, TOPLEVEL, "verilator",
         parameters={"N": N, "TAPS": sum(1 << (t - 1) for t in Disc(N).taps), "FILTER": FILTER,
-                    "ROM_FILE": rom_file(N), "CLK_HZ": CLK_HZ, "BAUD": 3_000_000})
+                    "ROM_FILE": rom_file(N), "CLK_HZ": CLK_HZ, "BAUD": 3_000_000, "SSI_WARNING": 1})

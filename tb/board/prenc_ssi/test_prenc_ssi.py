@@ -4,7 +4,7 @@
 The controller (this testbench) drives ssi_clk with WIDTH + 2 pulses (+1 to see the line low) and samples
 ssi_data on each falling edge after the first, as an SSI master does. Expected
 values: prenc.board.ssi's frame (position at the first falling edge, Gray or binary,
-error bit = not valid) and the protocol's timing: data low after the frame, high
+error bit = not valid, and with WARN_BIT = 1 the warning bit after it) and the protocol's timing: data low after the frame, high
 again one monoflop time after the last clock edge, a new latch only after it.
 """
 
@@ -55,8 +55,10 @@ async def data_at(dut) -> int:
 async def frames_at_every_rate_gray_and_binary(dut):
     r = rng()
     width, monoflop = int(dut.WIDTH.value), int(dut.MONOFLOP.value)
+    warn_bit = int(dut.WARN_BIT.value)
     dut.position.value = 0
     dut.valid.value = 1
+    dut.warn.value = 0
     dut.gray.value = 1
     dut.ssi_clk.value = 1
     await start_clock_and_reset(dut, 4)
@@ -65,10 +67,11 @@ async def frames_at_every_rate_gray_and_binary(dut):
         ctl = Controller(dut, rate)
         for gray_code in (1, 0):
             for _ in range(6):
-                position, valid = r.randrange(1 << width), r.randrange(2)
+                position, valid, warn = r.randrange(1 << width), r.randrange(2), r.randrange(2)
                 dut.gray.value = gray_code
                 dut.position.value = position
                 dut.valid.value = valid
+                dut.warn.value = warn
                 changed = {}
 
                 def change_after_latch():
@@ -76,12 +79,16 @@ async def frames_at_every_rate_gray_and_binary(dut):
                     # synchronizer's latch): the frame must still carry the old one.
                     changed["cb"] = cocotb.start_soon(_later(dut, 6, r.randrange(1 << width)))
 
-                bits = await ctl.read(width + 3, change_after_latch)
-                assert bits[:-1] == ssi.frame_bits(position, width, bool(valid), bool(gray_code)), (
-                    rate, gray_code, position, valid, bits)
+                bits = await ctl.read(width + 3 + warn_bit, change_after_latch)
+                expected = ssi.frame_bits(position, width, bool(valid), bool(gray_code),
+                                          warning=bool(warn) if warn_bit else None)
+                assert bits[:-1] == expected, (rate, gray_code, position, valid, warn, bits)
                 assert bits[-1] == 0, "data must be low after the last bit"
-                got = ssi.decode(bits[:-1], width, bool(gray_code))
-                assert got == (position, bool(valid))
+                if warn_bit:
+                    got = ssi.decode_with_warning(bits[:-1], width, bool(gray_code))
+                    assert got == (position, bool(valid), bool(warn))
+                else:
+                    assert ssi.decode(bits[:-1], width, bool(gray_code)) == (position, bool(valid))
                 reads += 1
                 # Monoflop: low until MONOFLOP clocks after the last edge, then high
                 # (read() returns half a period after the last rising edge).
@@ -102,6 +109,7 @@ async def a_frame_cut_short_ends_at_the_monoflop_time(dut):
     width, monoflop = int(dut.WIDTH.value), int(dut.MONOFLOP.value)
     dut.position.value = (1 << width) - 1
     dut.valid.value = 1
+    dut.warn.value = 0
     dut.gray.value = 0
     dut.ssi_clk.value = 1
     await start_clock_and_reset(dut, 4)
@@ -111,10 +119,15 @@ async def a_frame_cut_short_ends_at_the_monoflop_time(dut):
     await ClockCycles(dut.clk, monoflop + 8)
     assert await data_at(dut) == 1
     dut.position.value = 0b1010 << (width - 4)
-    bits = await ctl.read(width + 2)
-    assert ssi.decode(bits, width, False) == (0b1010 << (width - 4), True), bits
+    bits = await ctl.read(width + 2 + int(dut.WARN_BIT.value))
+    if int(dut.WARN_BIT.value):
+        assert ssi.decode_with_warning(bits, width, False) == (0b1010 << (width - 4), True, False), bits
+    else:
+        assert ssi.decode(bits, width, False) == (0b1010 << (width - 4), True), bits
 
 
+@pytest.mark.parametrize("warn_bit", [0, 1])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_ssi(simulator):
-    run(__file__, TOPLEVEL, simulator, parameters={"WIDTH": 12, "ERROR_BIT": 1, "MONOFLOP": 20 * CLK_HZ // 10**6})
+def test_prenc_ssi(simulator, warn_bit):
+    run(__file__, TOPLEVEL, simulator,
+        parameters={"WIDTH": 12, "ERROR_BIT": 1, "WARN_BIT": warn_bit, "MONOFLOP": 20 * CLK_HZ // 10**6})
