@@ -53,7 +53,7 @@ from .encoder import Disc, VirtualEncoder
 from .faults import Bounce, ContaminatedSlot, MissedQuadratureState, RandomGlitches, RandomMisreads
 from .fine_bench import LOOKAHEAD_HALVES, V_FRAC
 from .printing import Printing
-from .scenarios import core_latency
+from .scenarios import core_latency, judge
 from .sensors import CrossingJitter, EdgeDelay
 
 N, CLK_HZ, FILTER, FINE_BITS, WINDOW = 10, 30_000_000, 2, 8, 1024
@@ -160,25 +160,12 @@ class InstrumentResult:
     velocity_rms: float = math.nan   # per cent, at steady speeds
 
 
-def judge_position(d: Draw, enc, valid: np.ndarray, hyb: np.ndarray) -> tuple[int, int | None]:
+def judge_position(d: Draw, enc, valid: np.ndarray, hyb: np.ndarray, mode: np.ndarray) -> tuple[int, int | None]:
     """(wrong valid clocks, the first) against the disc's own position (Draw.truth), as
-    prenc.virtual.scenarios.judge does against the ideal disc's: the core's latency, and
-    a tolerance of the longest stretch in which the pins' A or B differ from the disc's
-    (clocks fewer than FILTER apart count as one), plus FILTER."""
+    prenc.virtual.scenarios.judge does every test of the core."""
     a, b, truth = d.truth()
-    differs = np.flatnonzero((enc.a != a) | (enc.b != b))
-    tol = 0
-    if len(differs):
-        starts = np.concatenate([[0], np.flatnonzero(np.diff(differs) - 1 >= max(FILTER, 1)) + 1])
-        ends = np.concatenate([starts[1:] - 1, [len(differs) - 1]])
-        tol = int((differs[ends] - differs[starts] + 1).max())
-    tol += FILTER
-    idx = np.arange(len(valid)) - core_latency(FILTER)
-    ok = np.zeros(len(valid), dtype=bool)
-    for shift in range(-tol, tol + 1):
-        ok |= truth[np.clip(idx + shift, 0, len(truth) - 1)] == hyb
-    bad = valid & ~ok & (idx >= 0)
-    return int(bad.sum()), (int(np.argmax(bad)) if bad.any() else None)
+    verdict = judge(enc, valid, hyb, mode, core_latency(FILTER), filter_len=FILTER, truth=truth, clean=(a, b))
+    return verdict.wrong, verdict.first_wrong
 
 
 def run_draw(seed: int, fine_lookahead_halves: int = LOOKAHEAD_HALVES) -> InstrumentResult:
@@ -255,7 +242,7 @@ def run_draw(seed: int, fine_lookahead_halves: int = LOOKAHEAD_HALVES) -> Instru
             if last_step > 0 and waited > 0 and abs(v) * waited > OVERDUE_QUARTERS:
                 failures.append(f"velocity {v:+.3g} quarters a clock {k - last_step} clocks after the "
                                 f"last step at clock {k}: more than {OVERDUE_QUARTERS} quarters in that time")
-    wrong, first_wrong = judge_position(d, enc, valid, hyb)
+    wrong, first_wrong = judge_position(d, enc, valid, hyb, mode)
     if wrong:
         failures.insert(0, f"wrong valid position at clock {first_wrong} ({wrong} clocks)")
     result = InstrumentResult(seed, d.label, total, failures, wrong)

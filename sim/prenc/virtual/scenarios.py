@@ -130,15 +130,17 @@ def must_lock(name: str) -> bool:
     return name.startswith(("start", "reversals", "accelerate"))
 
 
-def sync_tolerance(enc: EncoderRun, filter_len: int = 0) -> int:
+def sync_tolerance(enc: EncoderRun, filter_len: int = 0,
+                   clean: tuple[np.ndarray, np.ndarray] | None = None) -> int:
     """Clocks a fault on A or B can hold the reader's view of them off the truth: the
     longest stretch from the first to the last clock where the faulted A or B differs
-    from the clean one, where clocks fewer than `filter_len` apart count as one stretch.
+    from the clean one (the ideal disc's, or `clean`: the disc's own A and B), where
+    clocks fewer than `filter_len` apart count as one stretch.
 
     A glitch filter of F clocks cannot settle between two such clocks (it needs F equal
     samples in a row), so two 1-clock glitches next to a true edge with one clean
     clock between them delay that edge by the whole stretch, not by one clock."""
-    a, b = Disc.sync(enc.theta)
+    a, b = Disc.sync(enc.theta) if clean is None else clean
     differs = np.flatnonzero((enc.a != a) | (enc.b != b))
     if not len(differs):
         return 0
@@ -166,12 +168,15 @@ class Verdict:
 
 
 def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndarray,
-          latency: int, tolerance: int | None = None, filter_len: int = 0) -> Verdict:
-    """Compare per-clock outputs (index = clock) with the truth of the run."""
-    tol = (sync_tolerance(enc, filter_len) if tolerance is None else tolerance) + filter_len
+          latency: int, tolerance: int | None = None, filter_len: int = 0,
+          truth: np.ndarray | None = None, clean: tuple[np.ndarray, np.ndarray] | None = None) -> Verdict:
+    """Compare per-clock outputs (index = clock) with the truth of the run: the ideal
+    disc's hybrid position, or `truth` with the disc's own clean A and B (`clean`: a
+    printed disc's quarters are its printed edges)."""
+    tol = (sync_tolerance(enc, filter_len, clean) if tolerance is None else tolerance) + filter_len
     valid = np.asarray(valid).astype(bool)
     pos_hyb = np.asarray(pos_hyb, dtype=np.int64)
-    truth = enc.hybrid
+    truth = enc.hybrid if truth is None else truth
     clocks = len(valid)
     idx = np.arange(clocks) - latency
     ok = np.zeros(clocks, dtype=bool)
