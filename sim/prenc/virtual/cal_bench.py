@@ -62,13 +62,13 @@ def bench_table(c_true: np.ndarray) -> Result:
     return calibrate(record, CAL_TURNS)
 
 
-def evaluate(case: fb.Case, table_c: np.ndarray, zero: float) -> dict[str, fb.Row]:
+def evaluate(case: fb.Case, table_c: np.ndarray, zero: float, sensors=()) -> dict[str, fb.Row]:
     """The printed disc without and with the table (prenc_fine with CAL = 1: the table
     block prenc.cal.lookup gives prenc_velocity and prenc_fine_position the corrections
     of their quarters' edges), beside the baselines (without the table: they have none);
     `zero` (slots) is the calibration's zero against the truth, taken off the calibrated
-    position's error."""
-    sync = fb.sync_stream(case.theta, fb.PRINTED)
+    position's error; `sensors`: prenc.virtual.sensors' effects on A and B."""
+    sync = fb.sync_stream(case.theta, fb.PRINTED, sensors=sensors)
     scale = 1 << fb.FINE_BITS
     plain = fb.run_fine(sync)
     cal = fb.run_fine(sync, table=table_c)
