@@ -920,7 +920,29 @@ def goals_section() -> bool:
                   f"{d.availability:>7.3f} {fv(d):>7} ({d.wrong} wrong{'' if d.meets(g) else ', short'}) "
                   f"{c.availability:>7.3f} {fv(c):>7} ({c.wrong} wrong{'' if c.meets(g) else ', short'})"
                   + ("" if a.meets(g) else "  short of goal"))
+    missed_states_over_seeds(n)
     return failed
+
+
+def missed_states_over_seeds(n: int, seeds: range = range(1, 21)) -> None:
+    """The missed-states scenario drawn with other seeds (the table above draws seed 3):
+    the core's valid share over them, and the plain reader's beside it (issue 60 item 3:
+    an independent bench reads 0.661 where the table reads 0.818)."""
+    from prenc.virtual.goals import goals, measure
+    from prenc.virtual.plain_reader import PlainReader
+    from prenc.core.reader import Reader
+
+    core, plain = [], []
+    for seed in seeds:
+        g = next(x for x in goals(n, seed=seed) if x.name == "missed_states")
+        enc = g.run(n)
+        core.append(measure(g, Reader(Code(n), 0), n, 0, enc).availability)
+        plain.append(measure(g, PlainReader(Code(n), 0), n, 0, enc).availability)
+    met = sum(a >= 0.80 for a in core)
+    print(f"   missed_states drawn with seeds {seeds.start} to {seeds.stop - 1} (F 0): core mean "
+          f"{np.mean(core):.3f}, min {min(core):.3f}, max {max(core):.3f}, {met} of {len(core)} at or above "
+          f"0.80; plain reader mean {np.mean(plain):.3f}. Issue 60 item 3 (>= 0.80 on any draw): "
+          f"{'met' if met == len(core) else 'MISSED'}")
 
 
 ND_INSTANCES = ((6, 2), (7, 2), (7, 3), (8, 3), (9, 3), (8, 4), (9, 4), (10, 4))
