@@ -25,8 +25,8 @@
 // 0: not built (SSI and BiSS-C send pos_hyb). CAL (1, with FINE = 1): the calibration
 // table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
 // in from CAL_FILE. FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
-// SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS: prenc_board's (make synth
-// PARAMS="NAME=VALUE ...").
+// SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS,
+// WARN_BURST: prenc_board's (make synth PARAMS="NAME=VALUE ...").
 
 `resetall
 `timescale 1ns / 1ps
@@ -49,7 +49,10 @@ module prenc_icebreaker #(
   parameter integer SPI_SETTINGS1   = 1,
   parameter integer SPI_SETTINGS2   = 0,
   parameter integer ABI_STEPS       = 0,
-  parameter integer ABI_EDGE_NS     = 250
+  parameter integer ABI_EDGE_NS     = 250,
+  parameter integer SSI_WARNING     = 0,
+  parameter integer WARN_SLOTS      = 128,
+  parameter integer WARN_BURST      = 8
 ) (
   input  wire CLK,
   input  wire BTN_N,
@@ -148,6 +151,9 @@ module prenc_icebreaker #(
     .SPI_SETTINGS2   (SPI_SETTINGS2),
     .ABI_STEPS       (ABI_STEPS),
     .ABI_EDGE_NS     (ABI_EDGE_NS),
+    .SSI_WARNING     (SSI_WARNING),
+    .WARN_SLOTS      (WARN_SLOTS),
+    .WARN_BURST      (WARN_BURST),
     .SPI             (DRIVES),
     .ABI             (DRIVES),
     .HEALTH          (DRIVES),

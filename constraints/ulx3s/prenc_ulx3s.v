@@ -23,7 +23,8 @@
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD, CAL, CAL_FILE as prenc_board; FINE_BITS,
 // BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO, SPI_SETTINGS1, SPI_SETTINGS2,
-// ABI_STEPS, ABI_EDGE_NS, UVW_POLE_PAIRS too (make synth PARAMS="NAME=VALUE ...").
+// ABI_STEPS, ABI_EDGE_NS, UVW_POLE_PAIRS, SSI_WARNING, WARN_SLOTS, WARN_BURST too (make
+// synth PARAMS="NAME=VALUE ...").
 
 `resetall
 `timescale 1ns / 1ps
@@ -46,7 +47,10 @@ module prenc_ulx3s #(
   parameter integer SPI_SETTINGS2   = 0,
   parameter integer ABI_STEPS       = 0,
   parameter integer ABI_EDGE_NS     = 250,
-  parameter integer UVW_POLE_PAIRS  = 0
+  parameter integer UVW_POLE_PAIRS  = 0,
+  parameter integer SSI_WARNING     = 0,
+  parameter integer WARN_SLOTS      = 128,
+  parameter integer WARN_BURST      = 8
 ) (
   input  wire       clk_25mhz,
   input  wire [1:1] btn,
@@ -147,7 +151,10 @@ module prenc_ulx3s #(
     .SPI_SETTINGS2   (SPI_SETTINGS2),
     .ABI_STEPS       (ABI_STEPS),
     .ABI_EDGE_NS     (ABI_EDGE_NS),
-    .UVW_POLE_PAIRS  (UVW_POLE_PAIRS)
+    .UVW_POLE_PAIRS  (UVW_POLE_PAIRS),
+    .SSI_WARNING     (SSI_WARNING),
+    .WARN_SLOTS      (WARN_SLOTS),
+    .WARN_BURST      (WARN_BURST)
   ) u_board (
     .clk             (clk),
     .rst             (rst),
