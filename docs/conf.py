@@ -37,8 +37,8 @@ myst_heading_anchors = 4
 render_using_wavedrompy = True
 wavedrom_html_jsinline = False
 
-html_theme = "alabaster"
+# Furo, as cocotb's documentation: a readable measure of text, a navigation tree that
+# shows where a page is, a light and a dark scheme, and pages that fit a phone.
+html_theme = "furo"
 html_title = f"prenc {release}"
 html_static_path: list[str] = []
-html_theme_options = {"description": "reader of a pseudorandom absolute rotary encoder",
-                      "page_width": "1100px", "sidebar_width": "240px"}

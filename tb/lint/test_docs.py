@@ -71,3 +71,34 @@ def test_a_module_without_a_latency_is_found():
 def test_the_readme_is_a_front_door():
     lines = (REPO / "README.md").read_text().splitlines()
     assert len(lines) <= 250, len(lines)
+
+
+def test_the_navigation_has_one_changelog_entry(site):
+    links = re.findall(r'href="changelog\.html[^"]*"', (site / "fine.html").read_text())
+    assert len(links) == 1, links
+
+
+def _wavedrom_blocks():
+    for page in sorted(REPO.glob("docs/**/*.md")):
+        for block in re.findall(r"```\{wavedrom\}\n(.*?)```", page.read_text(), re.S):
+            yield page.relative_to(REPO), block
+
+
+# The SVG's head and foot are centred text of 11 pt; this wide a character (Helvetica's
+# widest average) is what the test assumes.
+CAPTION_CHAR_PX = 7.5
+
+
+@pytest.mark.parametrize("page,block", list(_wavedrom_blocks()),
+                         ids=[f"{p}-{i}" for i, (p, _) in enumerate(_wavedrom_blocks())])
+def test_the_timing_diagrams_captions_fit_their_picture(page, block):
+    import wavedrom
+
+    svg = wavedrom.render(block).tostring()
+    width = float(re.search(r'<svg[^>]*width="([\d.]+)"', svg).group(1))
+    lanes = re.search(r'id="lanes_0" transform="translate\(([\d.]+),', svg)
+    left = float(lanes.group(1)) if lanes else 0.0
+    for x, text in re.findall(r'<text[^>]*text-anchor="middle" x="([\d.-]+)"[^>]*><tspan>([^<]*)</tspan>', svg):
+        centre = left + float(x)
+        room = 2 * min(centre, width - centre)
+        assert CAPTION_CHAR_PX * len(text) <= room, f"{page}: '{text}' is too long for its {width:.0f}-px picture"
