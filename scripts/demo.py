@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """`make demo`: generate the ROM, run the RTL core on the virtual encoder through the
-demo scenario (prenc.cli.core_demo), print the story and plot it."""
+demo scenario (prenc.cli.core_demo), print the story and plot it; then the instrument
+(prenc.cli.instrument_demo): the fine position and the velocity on a printed disc,
+before and after calibration, printed and plotted."""
 
 from __future__ import annotations
 
@@ -13,7 +15,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "tb"))
 sys.path.insert(0, str(REPO / "tb" / "core" / "prenc_core"))
 
-from prenc.cli import core_demo  # noqa: E402
+from prenc.cli import core_demo, instrument_demo  # noqa: E402
 from prenc.codes.debruijn import Code  # noqa: E402
 from prenc.codes.lfsr import taps_mask  # noqa: E402
 from prenc.codes.rom import write_rom  # noqa: E402
@@ -37,6 +39,7 @@ def main() -> int:
         parameters={"N": n, "TAPS": taps_mask(Code(n).taps), "FILTER": core_demo.FILTER, "ROM_FILE": rom},
         extra_env={"DEMO_OUT": str(trace)}, log_file=out / "sim.log")
     wrong = core_demo.tell(trace, out)
+    instrument_demo.tell(out)
     return 1 if wrong else 0
 
 

@@ -137,3 +137,9 @@ def test_make_demo_reads_the_story_without_a_wrong_valid_position(tmp_path):
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     assert "protected core: 0 wrong valid clocks" in proc.stdout, proc.stdout
     assert (tmp_path / "demo.png").stat().st_size > 10_000
+    # The instrument's part: over the turn at 600 rpm on the printed disc, the calibrated
+    # fine position within issue 58's 1/256 slot RMS, and far better than without a table.
+    turn = next(line for line in proc.stdout.splitlines() if line.strip().startswith("one turn at 600 rpm"))
+    quarter, raw, calibrated = (float(cell.split("/")[0]) for cell in turn.split()[5:8])
+    assert calibrated <= 1 / 256 and calibrated < raw / 10 and raw < quarter, turn
+    assert (tmp_path / "instrument.png").stat().st_size > 10_000

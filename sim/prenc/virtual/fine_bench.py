@@ -122,6 +122,7 @@ def run_fine(sync: Sync, fine_bits: int = FINE_BITS, lookahead_halves: int = LOO
     v_valid = np.zeros(total, dtype=np.int8)
     fine_pos = np.zeros(total, dtype=np.int64)
     interpolated = np.zeros(total, dtype=np.int8)
+    fine_valid = np.zeros(total, dtype=np.int8)
     step, cw, pos = sync.step.tolist(), sync.cw.tolist(), sync.pos_hyb.tolist()
     scale = 1.0 / (1 << V_FRAC)
     for c in range(total):
@@ -130,7 +131,9 @@ def run_fine(sync: Sync, fine_bits: int = FINE_BITS, lookahead_halves: int = LOO
         v_valid[c] = vel.valid
         fine_pos[c] = fine.fine_pos
         interpolated[c] = fine.fine.interpolated
-    return {"velocity": v_out, "velocity_valid": v_valid, "fine": fine_pos, "interpolated": interpolated}
+        fine_valid[c] = fine.fine_valid
+    return {"velocity": v_out, "velocity_valid": v_valid, "fine": fine_pos, "interpolated": interpolated,
+            "fine_valid": fine_valid}
 
 
 # -- baselines --------------------------------------------------------------------
