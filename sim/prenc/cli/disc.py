@@ -3,6 +3,8 @@
 
     prenc disc dual   [--bits N] [--taps a,b] [--shift D] [dimensions] -o disc.svg [--png disc.png]
     prenc disc matrix [--n N] [--checksum] [dimensions] -o disc.svg [--png disc.png]
+    prenc disc template [--bits N] [dimensions] [--slit MM] -o template.svg [--png template.png]
+                      (where the heads go: prenc.cli.disc_template)
     prenc disc nd     [--sequence S ...] [--phases a,b] [--n 10 --d 2 --length 170 --tracks 2]
                       [--circumference MM] [--height MM] -o strip.svg [--png strip.png]
 
@@ -335,6 +337,17 @@ def _cmd(args) -> None:
         sys.stderr.write("\n".join(drawing.caption) + "\n")
 
 
+def _template_cmd(args) -> None:
+    from . import disc_template
+
+    disc = dual_disc(args.bits, args.taps, args.shift, args.outer_radius, args.ring_width, args.gap, args.hole,
+                     not args.no_ring_b)
+    tp = disc_template.template(disc, args.bits, args.slit, args.sensor_width, args.sync_offset)
+    disc_template.write(tp, args.output, args.png)
+    if args.output != "-":
+        sys.stderr.write("\n".join(tp.caption) + "\n")
+
+
 def add_parser(sub) -> None:
     from .arguments import taps_arg
 
@@ -362,6 +375,22 @@ def add_parser(sub) -> None:
     dual.add_argument("--no-ring-b", action="store_true", help="leave out sync ring B")
     common(dual, 30.0, 1.2, 0.3)
     dual.set_defaults(func=_cmd)
+
+    template = kinds.add_parser("template", help="where the heads go on the dual-track disc: a template "
+                                "for the board, or a slit mask on film")
+    template.add_argument("--bits", "-n", type=int, default=10, metavar="N", help="code word length (default 10)")
+    template.add_argument("--taps", type=taps_arg, default=None, metavar="a,b,...")
+    template.add_argument("--shift", "-d", type=int, default=None, metavar="D",
+                          help="track 2 shift in slots (default 2^(N-1)+N-1)")
+    template.add_argument("--no-ring-b", action="store_true", help="the disc has no sync ring B: B read on ring A")
+    template.add_argument("--slit", type=float, default=None, metavar="MM",
+                          help="each head's slit width (default a quarter of the narrowest slot)")
+    template.add_argument("--sync-offset", type=int, default=0, metavar="K",
+                          help="the sync pair K whole slots clockwise of head 1 (default 0)")
+    template.add_argument("--sensor-width", type=float, default=4.0, metavar="MM",
+                          help="how far apart the two sync sensors must be without ring B (default 4)")
+    common(template, 30.0, 1.2, 0.3)
+    template.set_defaults(func=_template_cmd)
 
     matrix = kinds.add_parser("matrix", help="a matrix-code disc of n tracks")
     matrix.add_argument("--n", type=int, default=3, choices=(2, 3, 4), help="tracks (default 3)")
