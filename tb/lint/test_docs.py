@@ -102,3 +102,13 @@ def test_the_timing_diagrams_captions_fit_their_picture(page, block):
         centre = left + float(x)
         room = 2 * min(centre, width - centre)
         assert CAPTION_CHAR_PX * len(text) <= room, f"{page}: '{text}' is too long for its {width:.0f}-px picture"
+
+
+@pytest.mark.parametrize("page,figures", [("measurements.html", ["availability.svg", "accuracy.svg"]),
+                                          ("fine.html", ["accuracy.svg"]),
+                                          ("calibration.html", ["calibration.svg"])])
+def test_the_benchs_figures_are_in_the_site(site, page, figures):
+    html = (site / page).read_text()
+    for name in figures:
+        assert re.search(rf'<img[^>]+src="[^"]*{re.escape(name)}"', html), name
+        assert (site / "_images" / name).read_text().lstrip().startswith("<?xml")
