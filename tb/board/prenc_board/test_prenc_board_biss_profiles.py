@@ -2,7 +2,7 @@
 """prenc_board's BiSS-C profiles read as the firmware that needs them reads BiSS-C
 (tb/biss_drivers.py): OnStepX's AS37_H39B_B layout (16 multi-turn + 23 single-turn
 bits, the error bit 1 on an error: BISS_MT_BITS = 16, BISS_ST_BITS = 23,
-BISS_ERROR_HIGH = 1) and JTW_24BIT (0 + 24), and VESC's single-turn BiSS-C with
+BISS_ERROR_HIGH = 1), JTW_24BIT (0 + 24) and JTW_26BIT (0 + 26), and VESC's single-turn BiSS-C with
 "Encoder Counts" = 22 (BISS_MT_BITS = 0, BISS_ST_BITS = 22).
 
 The disc turns at 600 rpm from rest (N = 10 at 30 MHz). Every frame the firmware
@@ -34,6 +34,7 @@ SETTLE = 60_000                           # lock (N + 2 slots) and the velocity
 PROFILES = {
     "onstepx_as37": {"BISS_MT_BITS": 16, "BISS_ST_BITS": 23, "BISS_ERROR_HIGH": 1},
     "onstepx_jtw24": {"BISS_MT_BITS": 0, "BISS_ST_BITS": 24},
+    "onstepx_jtw26": {"BISS_MT_BITS": 0, "BISS_ST_BITS": 26},
     "vesc": {"BISS_MT_BITS": 0, "BISS_ST_BITS": 22},
 }
 
@@ -58,7 +59,7 @@ async def the_firmware_reads_the_disc(dut):
     if st_bits == 22:
         master, name = Vesc(dut, CLK_HZ, enc_res=22), "vesc"
     else:
-        master = OnStepX(dut, CLK_HZ, "AS37_H39B_B" if mt_bits == 16 else "JTW_24BIT")
+        master = OnStepX(dut, CLK_HZ, "AS37_H39B_B" if mt_bits == 16 else f"JTW_{st_bits}BIT")
         name = "onstepx"
     errors, dropped, frames = [], [], 0
     while get_sim_time("ns") / PERIOD_NS < END:
