@@ -343,7 +343,7 @@ def _template_cmd(args) -> None:
     disc = dual_disc(args.bits, args.taps, args.shift, args.outer_radius, args.ring_width, args.gap, args.hole,
                      not args.no_ring_b)
     tp = disc_template.template(disc, args.bits, args.slit, args.sensor_width, args.sync_offset)
-    disc_template.write(tp, args.output, args.png)
+    disc_template.write(tp, args.output, args.png, to_svg(disc) if args.with_disc else None)
     if args.output != "-":
         sys.stderr.write("\n".join(tp.caption) + "\n")
 
@@ -385,6 +385,8 @@ def add_parser(sub) -> None:
     template.add_argument("--no-ring-b", action="store_true", help="the disc has no sync ring B: B read on ring A")
     template.add_argument("--slit", type=float, default=None, metavar="MM",
                           help="each head's slit width (default a quarter of the narrowest slot)")
+    template.add_argument("--with-disc", action="store_true",
+                          help="the disc beside the template in one SVG: the disc and its slit masks on one film")
     template.add_argument("--sync-offset", type=int, default=0, metavar="K",
                           help="the sync pair K whole slots clockwise of head 1 (default 0)")
     template.add_argument("--sensor-width", type=float, default=4.0, metavar="MM",

@@ -33,7 +33,7 @@ by x times the slit's width).
 from __future__ import annotations
 
 import math
-import sys
+import re
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -227,10 +227,29 @@ def to_png(tp: Template, path, pixels: int = 1000) -> None:
     plt.close(fig)
 
 
-def write(tp: Template, svg_path: str, png_path: str | None) -> None:
+def beside(*svgs: str, gap: float = 10.0) -> str:
+    """One SVG with the drawings of `svgs` (each in millimetres, as prenc disc writes
+    them) side by side, `gap` mm apart, at the same scale: the disc and its slit masks on
+    one sheet of film."""
+    parts, x, height = [], 0.0, 0.0
+    for svg in svgs:
+        head = re.search(r'<svg[^>]*width="([\d.]+)mm" height="([\d.]+)mm"[^>]*>', svg)
+        body = svg[head.end():svg.rindex("</svg>")].replace('<rect width="100%" height="100%" fill="white"/>', "")
+        parts.append(f'<g transform="translate({x:.3f},0)">{body}</g>')
+        x += float(head.group(1)) + gap
+        height = max(height, float(head.group(2)))
+    width = x - gap
+    return "\n".join(['<?xml version="1.0" encoding="UTF-8"?>',
+                      f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:.3f}mm" height="{height:.3f}mm" '
+                      f'viewBox="0 0 {width:.3f} {height:.3f}">',
+                      '<rect width="100%" height="100%" fill="white"/>', *parts, "</svg>"]) + "\n"
+
+
+def write(tp: Template, svg_path: str, png_path: str | None, disc_svg: str | None = None) -> None:
+    """The template's SVG (with `disc_svg`, the disc's beside it on one sheet) and PNG."""
     from ..codes.rom import write_atomically
 
-    text = to_svg(tp)
+    text = to_svg(tp) if disc_svg is None else beside(disc_svg, to_svg(tp))
     write_atomically(svg_path, lambda: text.encode())
     if png_path:
         to_png(tp, png_path)

@@ -82,3 +82,15 @@ def test_the_sync_pair_may_sit_whole_slots_from_head_1(offset):
     verdict = judge(beside, np.array([o.valid for o in out_moved]), np.array([o.pos_hyb for o in out_moved]),
                     np.array([o.mode for o in out_moved]), core_latency(2), filter_len=2)
     assert verdict.wrong == 0 and verdict.availability > 0.9
+
+
+def test_the_disc_and_its_slit_masks_on_one_sheet():
+    disc = dual_disc(10)
+    tp = disc_template.template(disc, 10)
+    from prenc.cli.disc import to_svg as disc_svg
+
+    sheet = disc_template.beside(disc_svg(disc), to_svg(tp), gap=10.0)
+    widths = [float(re.search(r'<svg[^>]*width="([\d.]+)mm"', s).group(1)) for s in (disc_svg(disc), to_svg(tp))]
+    assert float(re.search(r'<svg[^>]*width="([\d.]+)mm"', sheet).group(1)) == pytest.approx(sum(widths) + 10.0)
+    assert 'id="track1"' in sheet and "prenc head template" in sheet
+    assert sheet.count('<rect width="100%"') == 1   # one white background, under both
