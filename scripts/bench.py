@@ -57,13 +57,13 @@
 11. The drives' interfaces (SPI as the AS5047P, ABI, UVW): `scripts/bench.py drives`.
 12. Sensors: the fine position, the velocity, FILTER and the calibration table through
    the sensors' own errors (prenc.virtual.sensors): `scripts/bench.py sensors`.
-14. Tolerances of the disc (prenc.virtual.tolerance_bench): B's phase, the duty cycle and
-   the eccentricity, one at a time, through the core's model and the fine position's with
-   and without a calibration table: `scripts/bench.py tolerances`.
 13. The warning before a failure (prenc.virtual.health_bench: the reader's model with
    prenc_health's): a clean disc with sensor noise, random misreads, a disc getting
    dirty on one track and on both; when the warning rises, when a track is dropped and
    when the position is lost, in turns and dirty slots: `scripts/bench.py health`.
+14. Tolerances of the disc (prenc.virtual.tolerance_bench): B's phase, the duty cycle and
+   the eccentricity, one at a time, through the core's model and the fine position's with
+   and without a calibration table: `scripts/bench.py tolerances`.
 Figures: sections 4b, 9 and 10 of the run are drawn (prenc.virtual.bench_figures) into
    docs/figures/ (bench.json and three SVG pictures the docs show); `scripts/bench.py
    figures` runs those three sections (without their synthesis rows) and draws them.
