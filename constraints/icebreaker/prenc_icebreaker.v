@@ -16,7 +16,8 @@
 //   UART:   RX pin 6, TX pin 9, to the on-board FTDI (second interface)
 //   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
-//   No UVW: the UP5K has no pins for it beside the LEDs, nor room (97 % full with it).
+//   UVW = 1: U, V, W on LED1, LED2, LED3 (PMOD2 pins 1 to 3 without the snap-off), and
+//   no warning before a failure (prenc_health): the UP5K has no room for both.
 //   With CAL = 1 neither SPI nor ABI nor the warning before a failure (prenc_health: nW
 //   only in a reduced mode): the table and the edges' capture take their room.
 //
@@ -26,7 +27,8 @@
 // table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
 // in from CAL_FILE. FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
 // SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS,
-// WARN_BURST: prenc_board's (make synth PARAMS="NAME=VALUE ...").
+// WARN_BURST, UVW_POLE_PAIRS: prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0):
+// 1 builds U, V, W (not with CAL = 1).
 
 `resetall
 `timescale 1ns / 1ps
@@ -52,7 +54,9 @@ module prenc_icebreaker #(
   parameter integer ABI_EDGE_NS     = 250,
   parameter integer SSI_WARNING     = 0,
   parameter integer WARN_SLOTS      = 128,
-  parameter integer WARN_BURST      = 8
+  parameter integer WARN_BURST      = 8,
+  parameter integer UVW             = 0,
+  parameter integer UVW_POLE_PAIRS  = 0
 ) (
   input  wire CLK,
   input  wire BTN_N,
@@ -85,8 +89,20 @@ module prenc_icebreaker #(
 
   localparam integer CLK_HZ = 30000000;
   // With the calibration table the UP5K has no room for the drives' SPI and ABI, nor for
-  // the warning.
+  // the warning; with UVW, none for the warning.
   localparam integer DRIVES = (CAL == 1) ? 0 : 1;
+  localparam integer HEALTH = (CAL == 1 || UVW == 1) ? 0 : 1;
+
+  generate
+    if (UVW != 0 && UVW != 1) begin : g_bad_uvw
+      initial $display("ERROR: %m: parameter UVW = %0d must be 0 or 1", UVW);
+      prenc_icebreaker_parameter_UVW_must_be_0_or_1 u_stop ();
+    end
+    if (UVW == 1 && CAL == 1) begin : g_uvw_and_cal
+      initial $display("ERROR: %m: UVW = 1 and CAL = 1: the UP5K has no room for both");
+      prenc_icebreaker_UVW_and_CAL_do_not_fit_together u_stop ();
+    end
+  endgenerate
 
   wire clk;
   wire locked;
@@ -127,7 +143,7 @@ module prenc_icebreaker #(
   wire       led_acquire;
   wire       spi_miso;
   wire       spi_miso_oe;
-  wire       uvw_u;          // UVW = 0: not built
+  wire       uvw_u;          // UVW = 0: not built, 0
   wire       uvw_v;
   wire       uvw_w;
 
@@ -156,8 +172,9 @@ module prenc_icebreaker #(
     .WARN_BURST      (WARN_BURST),
     .SPI             (DRIVES),
     .ABI             (DRIVES),
-    .HEALTH          (DRIVES),
-    .UVW             (0)
+    .HEALTH          (HEALTH),
+    .UVW             (UVW),
+    .UVW_POLE_PAIRS  (UVW_POLE_PAIRS)
   ) u_board (
     .clk             (clk),
     .rst             (rst),
@@ -203,13 +220,15 @@ module prenc_icebreaker #(
 
   assign LEDG_N = ~led_valid;
   assign LEDR_N = led_valid;
-  assign LED1   = led_acquire;
-  assign LED2   = led_normal;
-  assign LED3   = led_reduced;
+  // UVW = 1: U, V, W take the snap-off's first three LEDs' pins (PMOD2 1, 2, 3 without
+  // the snap-off board).
+  assign LED1   = (UVW == 1) ? uvw_u : led_acquire;
+  assign LED2   = (UVW == 1) ? uvw_v : led_normal;
+  assign LED3   = (UVW == 1) ? uvw_w : led_reduced;
   assign LED4   = led_incremental;
   assign LED5   = pos_valid;
 
-  wire unused_ok = &{1'b0, mode, uvw_u, uvw_v, uvw_w};
+  wire unused_ok = &{1'b0, mode, uvw_u, uvw_v, uvw_w, led_acquire, led_normal, led_reduced};
 
 endmodule
 

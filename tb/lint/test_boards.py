@@ -56,6 +56,20 @@ def test_the_icebreaker_with_the_calibration_table_meets_its_clock():
     assert result.used(synth.TARGETS[result.target].brams)[0] >= 22, "the ROMs, the program and the table"
 
 
+def test_the_icebreaker_with_uvw_meets_its_clock():
+    """`make synth BOARD=icebreaker PARAMS="UVW=1"`: U, V, W on the snap-off's LED pins, the
+    warning left out for their room; it meets 30 MHz with one of the board seeds."""
+    out = SIM_BUILD / "boards" / "icebreaker-uvw"
+    result = synth.board_build(synth.BOARDS["icebreaker"], 10, out, extra={"UVW": 1})
+    assert result.timing_met
+
+
+def test_the_icebreaker_refuses_uvw_with_the_calibration_table():
+    with pytest.raises(synth.FlowError, match="UVW_and_CAL"):
+        synth.board_build(synth.BOARDS["icebreaker"], 10, SIM_BUILD / "boards" / "icebreaker-uvw-cal", cal="1",
+                          extra={"UVW": 1})
+
+
 def test_the_ulx3s_with_the_calibration_table_meets_its_clock():
     """`make synth BOARD=ulx3s CAL=1`: the fine position with an empty calibration table
     (written later over the host link) and the edges' capture, in block RAM beside the ROM."""

@@ -95,10 +95,17 @@ def _value(value: object) -> str:
     return f'"{value}"' if isinstance(value, Path) else synth.literal(value)
 
 
-def pair_verilog(board: str, out: Path, parameters: dict[str, object]) -> Path:
+# The iCEBreaker built with UVW = 1 (prenc_icebreaker): U, V, W on the snap-off's LED pins.
+UVW_ON_LEDS = {"LED1": ("uvw_u",), "LED2": ("uvw_v",), "LED3": ("uvw_w",)}
+
+
+def pair_verilog(board: str, out: Path, parameters: dict[str, object],
+                 more_pins: dict[str, tuple[str | None, ...]] | None = None) -> Path:
     """`board_pair` for the board, into <out>/board_pair.v: the RTL top with `parameters`
-    (those the netlist was synthesized with). Its parameter BUILD only names the build."""
+    (those the netlist was synthesized with). Its parameter BUILD only names the build;
+    `more_pins`: ports the board's BOARD_PINS leave compared only, given a board signal."""
     top, pins = synth.BOARDS[board].top, BOARD_PINS[board]
+    pins = BoardPins(pins.clock, {**pins.pins, **(more_pins or {})}, pins.host_link, pins.spi)
     lines = ["`timescale 1ns / 1ps", "`default_nettype none", "",
              'module board_pair #(parameter BUILD = "") (',
              "  input  wire clk,"]

@@ -52,6 +52,7 @@ from biss_master import Master  # noqa: E402
 from board_harness import drive_encoder  # noqa: E402
 from common import PERIOD_NS  # noqa: E402
 from prenc.board import as5047, protocol, ssi  # noqa: E402
+from prenc.board.abi import UVW_PATTERN  # noqa: E402
 from prenc.virtual.encoder import Disc  # noqa: E402
 from prenc.virtual.scenarios import core_latency  # noqa: E402
 from runner import SIM_BUILD, run  # noqa: E402
@@ -156,6 +157,11 @@ async def the_netlist_equals_the_rtl_clock_for_clock(dut):
             answer, first, last = await ask_host(dut, clk_hz // int(os.environ["PRENC_HOST_BAUD"]))
             assert answer.valid and answer.values["position"] in truth(first, last), (first, last, answer)
             checked["host"] += 1
+        if os.environ.get("PRENC_UVW"):   # one pole pair, zero at 0: six sectors a turn
+            sector = int(6 * float(theta_at(np.array([now()]))[0]) / (1 << N)) % 6
+            uvw = (int(dut.uvw_u.value), int(dut.uvw_v.value), int(dut.uvw_w.value))
+            assert uvw in {UVW_PATTERN[(sector + d) % 6] for d in (-1, 0, 1)}, (now(), uvw, sector)
+            checked["uvw"] = checked.get("uvw", 0) + 1
         if phase == "clockwise":
             await ClockCycles(dut.clk, max(1, int(REVERSE - now()) + 400))
     await ClockCycles(dut.clk, round(25e-6 * clk_hz))  # BiSS-C's timeout and SSI's monoflop end
@@ -165,9 +171,11 @@ async def the_netlist_equals_the_rtl_clock_for_clock(dut):
     assert mismatches == 0, f"the netlist differed from the RTL at {mismatches} falling edges (first: see the log)"
 
 
-def prepare(board: str, where: Path, rtl_edit=None) -> tuple[list[Path], dict[str, str], list[str]]:
+def prepare(board: str, where: Path, rtl_edit=None, extra: dict[str, int] | None = None
+            ) -> tuple[list[Path], dict[str, str], list[str]]:
     """The netlist of the board build, the pair, and the sources to simulate; with
-    `rtl_edit` (path, old, new), the RTL is first copied and that text replaced."""
+    `rtl_edit` (path, old, new), the RTL is first copied and that text replaced; `extra`:
+    parameters beside the board's own (`make synth PARAMS=...`)."""
     import pair
     import synth
 
@@ -186,13 +194,17 @@ def prepare(board: str, where: Path, rtl_edit=None) -> tuple[list[Path], dict[st
         rtl = [copied if p.resolve() == Path(path).resolve() else p for p in rtl]
     host_link = pair.BOARD_PINS[board].host_link
     parameters = synth.board_parameters(b, N, where, baud=BAUD[board] if host_link else None)  # as make synth
+    parameters.update(extra or {})
+    more_pins = pair.UVW_ON_LEDS if (extra or {}).get("UVW") else None
     net = pair.netlist(board, where, parameters, rtl)
-    sources = [*pair.cell_library(board, where), *rtl, net, pair.pair_verilog(board, where, parameters)]
+    sources = [*pair.cell_library(board, where), *rtl, net, pair.pair_verilog(board, where, parameters, more_pins)]
     env = {"PRENC_BOARD": board, "PRENC_CLK_HZ": str(round(b.clock_mhz * 1e6))}
     if host_link:
         env["PRENC_HOST_BAUD"] = str(BAUD[board])
     if pair.BOARD_PINS[board].spi:
         env["PRENC_SPI"] = "1"
+    if more_pins or board == "ulx3s":
+        env["PRENC_UVW"] = "1"
     # Icarus takes no default values on input ports: every cell input is connected.
     args = ["-DNO_ICE40_DEFAULT_ASSIGNMENTS"]
     return sources, env, args
@@ -203,6 +215,13 @@ def test_board_netlist(board):
     sources, env, args = prepare(board, SIM_BUILD / "netlist" / board)
     run(__file__, "board_pair", "icarus", sources=sources, extra_env=env, build_args=args,
         parameters={"BUILD": board})
+
+
+def test_the_icebreaker_with_uvw_netlist():
+    """`make synth BOARD=icebreaker PARAMS="UVW=1"`: U, V, W on the LED pins, as the RTL."""
+    sources, env, args = prepare("icebreaker", SIM_BUILD / "netlist" / "icebreaker-uvw", extra={"UVW": 1})
+    run(__file__, "board_pair", "icarus", sources=sources, extra_env=env, build_args=args,
+        parameters={"BUILD": "icebreaker-uvw"})
 
 
 def test_a_register_without_its_reset_is_caught():
