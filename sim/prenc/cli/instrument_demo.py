@@ -69,6 +69,7 @@ class Result:
     rpm_true: np.ndarray          # the true speed over each clock
     quarter_err: np.ndarray       # slots: the quarter alone (pos_hyb)
     err: dict[str, np.ndarray]    # slots: the fine position, "uncalibrated" and "calibrated"
+                                  # (NaN while it is not valid)
     rpm: dict[str, np.ndarray]    # the velocity output, in rpm
     table_rms: float              # the table against the disc's true edges, slots RMS
     zero: float                   # the calibration's zero against the shaft's, slots
@@ -88,8 +89,8 @@ def run() -> Result:
     for name, t in (("uncalibrated", None), ("calibrated", table.table.c)):
         r = fb.run_fine(sync, table=t)
         fine = r["fine"][:-1] / scale - (4 * zero if t is not None else 0.0)
-        # Until the fine position is valid (its pipeline's first clocks) it is not read.
-        out_err[name] = np.where(r["fine_valid"][:-1] == 1, fb.position_error(fine, truth), 0.0)
+        # Until the fine position is valid (its pipeline's first clocks) it is not read: NaN.
+        out_err[name] = np.where(r["fine_valid"][:-1] == 1, fb.position_error(fine, truth), np.nan)
         out_rpm[name] = r["velocity"][:-1] * to_rpm
     return Result(theta, chapters, (theta[1:] - theta[:-1]) * 4 * to_rpm,
                   fb.position_error(sync.pos_hyb[:-1].astype(np.float64), truth), out_err, out_rpm,
@@ -97,7 +98,8 @@ def run() -> Result:
 
 
 def rms_max(x: np.ndarray) -> tuple[float, float]:
-    return float(np.sqrt(np.mean(x * x))), float(np.max(np.abs(x)))
+    """RMS and largest magnitude, over the clocks read (not NaN)."""
+    return float(np.sqrt(np.nanmean(x * x))), float(np.nanmax(np.abs(x)))
 
 
 def figures(r: Result) -> list[str]:
@@ -139,8 +141,8 @@ def _envelope(x: np.ndarray, y: np.ndarray, bins: int) -> tuple[np.ndarray, np.n
     points drawn as the band it fills)."""
     edges = np.linspace(0, len(x), bins + 1).astype(np.int64)
     edges = np.unique(edges)
-    lo = np.minimum.reduceat(y, edges[:-1])
-    hi = np.maximum.reduceat(y, edges[:-1])
+    lo = np.fmin.reduceat(y, edges[:-1])
+    hi = np.fmax.reduceat(y, edges[:-1])
     mid = x[(edges[:-1] + edges[1:] - 1) // 2]
     return mid, lo, hi
 
