@@ -262,6 +262,13 @@ def synthesis_rows() -> list[tuple[str, int, str]]:
                 rows.append((f"{name} board top", n, _synth_line(synth, r)))
             except synth.FlowError as err:
                 rows.append((f"{name} board top", n, f"FAILED: {err}"))
+    # The iCEBreaker with U, V, W instead of the warning (PARAMS="UVW=1").
+    try:
+        r = synth.board_build(synth.BOARDS["icebreaker"], 10, SIM_BUILD / "bench" / "synth" / "icebreaker-n10-uvw",
+                              extra={"UVW": 1})
+        rows.append(("icebreaker board top, UVW = 1", 10, _synth_line(synth, r)))
+    except synth.FlowError as err:
+        rows.append(("icebreaker board top, UVW = 1", 10, f"FAILED: {err}"))
     # The LiteX example: VexRiscv, prenc_wb and the firmware of sw/litex/ (scripts/litex_soc.py).
     for board in ("ulx3s", "icebreaker"):
         what = f"LiteX example SoC (VexRiscv minimal + prenc_wb), {board}"
