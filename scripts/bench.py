@@ -726,16 +726,36 @@ def fine_section(logic: bool = True) -> bool:
                     f"{n} {'never' if rows[n].zero_after == float('inf') else f'{rows[n].zero_after:.2f}'}"
                     for n in names) + " edge periods"
             print(line)
+    tol = fb.PRINTED_EDGE_TOLERANCE
+    print(f"\n   the same printed disc, ours with EDGE_TOLERANCE = {tol} (1/1000 slot: whole-cycle windows, a")
+    print("   test that allows that much error at each edge); beside it, ours as above (EDGE_TOLERANCE = 0)")
+    print(f"   {'scenario':<34} {'position':>17} {'velocity %':>17} {'EDGE_TOLERANCE = 0: velocity %':>31}")
+    printed = list(results)[1]
+    tolerant: dict[str, object] = {}
+    for case in fb.cases():
+        row = fb.evaluate_ours(case, fb.PRINTED, edge_tolerance=tol)
+        tolerant[case.name] = row
+        base = results[printed][case.name]["ours"]
+        line = (f"   {case.name:<34} {row.fine[0]:.5f}/{row.fine[1]:.4f} {row.velocity[0]:>9.4f}/{row.velocity[1]:.3f}"
+                f" {base.velocity[0]:>22.4f}/{base.velocity[1]:.3f}")
+        if case.stop_clock is not None:
+            line += f"  0 after {row.zero_after:.2f} edge periods"
+        print(line)
     print(f"   ({time.perf_counter() - t0:.0f} s)")
     for key, disc in zip(("ideal", "printed"), results):
         FIGURE_DATA["accuracy"][key] = {
             name: [(r, results[disc][f"{r} rpm"][name].fine[0], results[disc][f"{r} rpm"][name].velocity[0])
                    for r in fb.STEADY_RPM] for name in ("coarse",) + names}
+    FIGURE_DATA["accuracy"]["printed"]["ours, EDGE_TOLERANCE"] = [
+        (r, tolerant[f"{r} rpm"].fine[0], tolerant[f"{r} rpm"].velocity[0]) for r in fb.STEADY_RPM]
+    FIGURE_DATA["accuracy"]["edge_tolerance"] = tol
     print("\n   The raw printed disc over whole turns (its eccentricity is once a turn), 600 and 6,000 rpm:")
     for rpm in (600, 6000):
         rows = fb.evaluate(fb.whole_turns_case(rpm), fb.PRINTED)
+        tolerant_turn = fb.evaluate_ours(fb.whole_turns_case(rpm), fb.PRINTED, edge_tolerance=tol)
         print(f"   {rpm} rpm: the quarter alone {rows['coarse'].fine[0]:.4f} slot RMS, ours {rows['ours'].fine[0]:.4f}; "
-              "velocity " + ", ".join(f"{n} {rows[n].velocity[0]:.3f} %" for n in names) + " RMS")
+              "velocity " + ", ".join(f"{n} {rows[n].velocity[0]:.3f} %" for n in names)
+              + f", ours with EDGE_TOLERANCE = {tol} {tolerant_turn.velocity[0]:.3f} % RMS")
     print("\n   After a step of speed (at once): clocks until the velocity is within 0.05 % again and stays")
     print("   (to the end of the run); in brackets, edge periods of the new speed")
     steps = fb.step_rows()

@@ -27,7 +27,7 @@
 // table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
 // in from CAL_FILE. FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
 // SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS,
-// WARN_BURST, UVW_POLE_PAIRS: prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0):
+// WARN_BURST, UVW_POLE_PAIRS, EDGE_TOLERANCE: prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0):
 // 1 builds U, V, W (not with CAL = 1).
 
 `resetall
@@ -43,6 +43,7 @@ module prenc_icebreaker #(
   parameter integer FINE     = 1,
   parameter integer CAL      = 0,
   parameter         CAL_FILE = "",
+  parameter integer EDGE_TOLERANCE  = 0,
   parameter integer FINE_BITS       = 0,
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_ST_BITS    = 0,
@@ -158,6 +159,7 @@ module prenc_icebreaker #(
     .EDGE_CAPTURE (CAL),
     .CAL          (CAL),
     .CAL_FILE     (CAL_FILE),
+    .EDGE_TOLERANCE  (EDGE_TOLERANCE),
     .FINE_BITS       (FINE_BITS),
     .BISS_MT_BITS    (BISS_MT_BITS),
     .BISS_ST_BITS    (BISS_ST_BITS),

@@ -23,8 +23,8 @@
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD, CAL, CAL_FILE as prenc_board; FINE_BITS,
 // BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO, SPI_SETTINGS1, SPI_SETTINGS2,
-// ABI_STEPS, ABI_EDGE_NS, UVW_POLE_PAIRS, SSI_WARNING, WARN_SLOTS, WARN_BURST too (make
-// synth PARAMS="NAME=VALUE ...").
+// ABI_STEPS, ABI_EDGE_NS, UVW_POLE_PAIRS, SSI_WARNING, WARN_SLOTS, WARN_BURST,
+// EDGE_TOLERANCE too (make synth PARAMS="NAME=VALUE ...").
 
 `resetall
 `timescale 1ns / 1ps
@@ -38,6 +38,7 @@ module prenc_ulx3s #(
   parameter integer BAUD     = 115200,
   parameter integer CAL      = 0,
   parameter         CAL_FILE = "",
+  parameter integer EDGE_TOLERANCE  = 0,
   parameter integer FINE_BITS       = 0,
   parameter integer BISS_MT_BITS    = 12,
   parameter integer BISS_ST_BITS    = 0,
@@ -142,6 +143,7 @@ module prenc_ulx3s #(
     .BAUD     (BAUD),
     .CAL      (CAL),
     .CAL_FILE (CAL_FILE),
+    .EDGE_TOLERANCE (EDGE_TOLERANCE),
     .FINE_BITS       (FINE_BITS),
     .BISS_MT_BITS    (BISS_MT_BITS),
     .BISS_ST_BITS    (BISS_ST_BITS),

@@ -77,6 +77,9 @@
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
 //   CAL_FILE      with CAL = 1: the table ($readmemh, prenc.cal.table's format, checked in
 //                 simulation); "" : all zero until written
+//   EDGE_TOLERANCE  with CAL = 0, a printed disc without its table: how far its edges
+//                 may be off their places, 1/1000 slot, 0..60 (docs/fine.md; default 0:
+//                 exact)
 //   HEALTH        1: the warning before a failure is built (prenc_health; default); 0:
 //                 not (nW only in a reduced mode: the iCEstick's HX1K has no room)
 //   WARN_SLOTS, WARN_BURST   prenc_health's: a source warns when its corrections come
@@ -136,6 +139,7 @@ module prenc_board #(
   parameter integer EXTRAPOLATE     = 1,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
+  parameter integer EDGE_TOLERANCE  = 0,
   parameter integer HEALTH          = 1,
   parameter integer WARN_SLOTS      = 128,
   parameter integer WARN_BURST      = 8,
@@ -392,7 +396,8 @@ module prenc_board #(
     .WINDOW           (WINDOW),
     .ENABLE           (FINE),
     .CAL              (CAL),
-    .CAL_FILE         (CAL_FILE)
+    .CAL_FILE         (CAL_FILE),
+    .EDGE_TOLERANCE   (EDGE_TOLERANCE)
   ) u_fine (
     .clk            (clk),
     .rst            (rst),

@@ -57,7 +57,9 @@
 // N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (the
 // velocity's window, 34 us in clocks: 1024 at 30 MHz, the default; docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
-// CAL_FILE (the table it starts with; "" : all zero); WARN_SLOTS, WARN_BURST (prenc_health's).
+// CAL_FILE (the table it starts with; "" : all zero); EDGE_TOLERANCE (with CAL = 0, a
+// printed disc without its table: prenc_velocity's, docs/fine.md); WARN_SLOTS, WARN_BURST
+// (prenc_health's).
 
 `resetall
 `timescale 1ns / 1ps
@@ -83,6 +85,7 @@ module prenc_wb #(
   parameter integer VELOCITY_WINDOW = 1024,
   parameter integer CAL             = 0,
   parameter         CAL_FILE        = "",
+  parameter integer EDGE_TOLERANCE  = 0,
   parameter integer WARN_SLOTS      = 128,
   parameter integer WARN_BURST      = 8
 ) (
@@ -281,7 +284,8 @@ module prenc_wb #(
     .WINDOW           (VELOCITY_WINDOW),
     .ENABLE           (FINE),
     .CAL              (CAL),
-    .CAL_FILE         (CAL_FILE)
+    .CAL_FILE         (CAL_FILE),
+    .EDGE_TOLERANCE   (EDGE_TOLERANCE)
   ) u_fine (
     .clk            (clk),
     .rst            (rst),

@@ -34,6 +34,8 @@
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
 //   CAL_FILE   with CAL = 1: the table's file ($readmemh, prenc.cal.table's format);
 //              "" : all zero until written
+//   EDGE_TOLERANCE   with CAL = 0: how far the disc's edges may be off their places,
+//              1/1000 slot (prenc_velocity's; 0: exact; docs/fine.md)
 //
 // Ports: as prenc_velocity's and prenc_fine_position's, and
 //   velocity   quarters per clock x 2^32, signed (the Wishbone register's and the host
@@ -51,7 +53,8 @@ module prenc_fine #(
   parameter integer WINDOW           = 1024,
   parameter integer ENABLE           = 1,
   parameter integer CAL              = 0,
-  parameter         CAL_FILE         = ""
+  parameter         CAL_FILE         = "",
+  parameter integer EDGE_TOLERANCE   = 0
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -198,8 +201,9 @@ module prenc_fine #(
       end
 
       prenc_velocity #(
-        .WINDOW (WINDOW),
-        .CAL    (CAL)
+        .WINDOW         (WINDOW),
+        .CAL            (CAL),
+        .EDGE_TOLERANCE (EDGE_TOLERANCE)
       ) u_velocity (
         .clk      (clk),
         .rst      (rst),

@@ -37,6 +37,11 @@
 // Parameters
 //   WINDOW   the window, in clocks (1024 at 30 MHz: 34 us), 32..2^30
 //   CAL      1: the corrections c_lo, c_hi are used (a calibration table); 0: not
+//   EDGE_TOLERANCE   with CAL = 0, a disc whose edges are not where they should be (a
+//            printed disc without its table), 1/1000 slot, 0..60: the windows are whole
+//            cycles, the constant-speed test allows that much error at each edge, and
+//            an overdue edge waits for a quarter that much wider (docs/fine.md: what to
+//            set for a disc). 0 (default): edges exact to a clock
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs
@@ -49,8 +54,9 @@
 `default_nettype none
 
 module prenc_velocity #(
-  parameter integer WINDOW = 1024,
-  parameter integer CAL    = 0
+  parameter integer WINDOW         = 1024,
+  parameter integer CAL            = 0,
+  parameter integer EDGE_TOLERANCE = 0
 ) (
   input  wire        clk,
   input  wire        rst,
@@ -72,6 +78,16 @@ module prenc_velocity #(
       initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
       prenc_velocity_parameter_CAL_must_be_0_or_1 u_stop ();
     end
+    if (EDGE_TOLERANCE < 0 || EDGE_TOLERANCE > 60) begin : g_bad_edge_tolerance
+      initial $display("ERROR: %m: parameter EDGE_TOLERANCE = %0d is out of range 0..60",
+                       EDGE_TOLERANCE);
+      prenc_velocity_parameter_EDGE_TOLERANCE_out_of_range_0_to_60 u_stop ();
+    end
+    if (CAL == 1 && EDGE_TOLERANCE != 0) begin : g_bad_edge_tolerance_cal
+      initial $display("ERROR: %m: parameter EDGE_TOLERANCE = %0d must be 0 with CAL = 1",
+                       EDGE_TOLERANCE);
+      prenc_velocity_parameter_EDGE_TOLERANCE_must_be_0_with_CAL_1 u_stop ();
+    end
   endgenerate
 
   // Fixed point (prenc.fine.program): speeds 2^-32 quarter per clock, the acceleration
@@ -82,12 +98,18 @@ module prenc_velocity #(
   localparam signed [16:0] WIDTH_LO = -17'sd2048; // the quarter's width less one, clamped
   localparam signed [16:0] WIDTH_HI = 17'sd3072;
 
-  // The register file's constants (prenc.fine.program.constants, RF's order).
+  // The register file's constants (prenc.fine.program.constants, RF's order). EDGE:
+  // EDGE_TOLERANCE as an edge's error, 2^-12 quarter; with it the windows are whole
+  // cycles (C_CYCLE: fewer quarters, no window; then C_QUARTERS more: one cycle).
+  localparam integer EDGE       = (EDGE_TOLERANCE * (4 << CAL_FRAC) + 500) / 1000;
+  localparam integer CYCLES     = (EDGE_TOLERANCE > 0) ? 1 : 0;
   localparam [31:0] C_WINDOW   = WINDOW;
   localparam [31:0] C_SHORT    = WINDOW / 2;
-  localparam [31:0] C_QUARTERS = (3 << CAL_FRAC) / 2;
-  localparam [31:0] C_LEVEL0   = (5 << CAL_FRAC) / 4;
-  localparam [31:0] C_2DELTA   = (CAL == 1) ? (32'd2 << 22) : 32'd0;   // 2 x 2^-10 quarter
+  localparam [31:0] C_QUARTERS = (CYCLES == 1) ? (1 << CAL_FRAC) : (3 << CAL_FRAC) / 2;
+  localparam [31:0] C_LEVEL0   = (5 << CAL_FRAC) / 4 + 2 * EDGE;
+  localparam [31:0] C_2DELTA   = ((CAL == 1) ? (32'd2 << 22) : 32'd0)   // 2 x 2^-10 quarter
+                               + (EDGE << 21);                        // 2 x EDGE, 2^-32
+  localparam [31:0] C_CYCLE    = (CYCLES == 1) ? (7 << CAL_FRAC) / 2 : 0;
   localparam [31:0] C_LATENCY  = 32'd256;
   localparam [31:0] C_OLD      = 32'd1 << 30;
   localparam [31:0] C_ONE      = 32'd1;
@@ -144,6 +166,7 @@ module prenc_velocity #(
     rf[7] = C_OLD;
     rf[8] = C_ONE;
     rf[9] = C_TWO;
+    rf[10] = C_CYCLE;
   end
 
   // The instruction's fields.

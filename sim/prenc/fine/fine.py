@@ -27,11 +27,11 @@ VEL_DELAY = POS_LAG + CAL_DELAY    # the decoder's step -> its quarter's correct
 
 class Fine:
     def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
-                 window: int = 1024, cal: int = 0, table=None):
+                 window: int = 1024, cal: int = 0, table=None, edge_tolerance: int = 0):
         if cal not in (0, 1):
             raise ValueError(f"cal = {cal} must be 0 or 1")
         self.cal = cal
-        self.velocity = Velocity(window=window, cal=cal)
+        self.velocity = Velocity(window=window, cal=cal, edge_tolerance=edge_tolerance)
         self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
         self.lookup = CalLookup(n, table) if cal else None
         self._reset_pipeline()

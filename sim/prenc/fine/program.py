@@ -8,10 +8,15 @@ The estimator, in the engine's words (docs/fine.md):
   acceleration shows at the next edge), else to the first step at least WINDOW clocks
   later: N1 (the distance between the two edges' true places, 2^-12 quarter) in P1
   clocks. Its mean speed V1 = N1 / P1 (2^-32 quarter per clock).
+- With EDGE_TOLERANCE (a disc without a table whose edges are off their places by
+  up to about that much: a printed disc), a window is whole cycles: it closes at the
+  first step at least 3.5 quarters from its anchor (4 quarters, so that A's and B's
+  duty cycles and phase cancel) if that is at least WINDOW / 2 clocks later, else at
+  the first step at least WINDOW clocks later that is whole cycles from it.
 - The constant-speed test: |V1 - S| < 2 (S + 2 DELTA) / P1, S the speed as it is,
-  DELTA an edge's residual error with a calibration table. A window's mean is off by
-  less than (S + 2 DELTA) / P1 (a clock's quantization at each end, DELTA at each
-  edge); twice that leaves room for the speed's own error.
+  DELTA an edge's residual error with a calibration table, or EDGE_TOLERANCE. A
+  window's mean is off by less than (S + 2 DELTA) / P1 (a clock's quantization at
+  each end, DELTA at each edge); twice that leaves room for the speed's own error.
   - Passed: S <- S + (V1 - S) / 2^RUN_SHIFT, acceleration 0: the speed is a running
     mean of the windows, so a steady speed reads the mean of many.
   - Failed, but the last two windows agree with each other within the same bound: the
@@ -31,7 +36,8 @@ The estimator, in the engine's words (docs/fine.md):
     between the two speeds widened by the second change's extrapolation: at most that
     change, so at most the step, where WINDOW >= 4 LATENCY = 1024 (P2 >= WINDOW / 2).
   - The first window after a start: S <- V1.
-- Overdue: the engine divides LEVEL (the quarter's true width and a quarter) by the
+- Overdue: the engine divides LEVEL (the quarter's true width and a quarter, and
+  twice EDGE_TOLERANCE) by the
   clocks since the last step, whenever it has nothing else to do. The disc has turned
   less than LEVEL since that step, so its mean speed is below the quotient: the speed
   is bounded by it (acceleration 0). Half as long again without a step is a stop: 0.
@@ -62,14 +68,36 @@ OLD = 1 << 30          # an anchor older than this (clocks) is dropped
 
 # The register file: the constants first (initial values), then the variables.
 RF = ("C_ZERO", "C_WINDOW", "C_SHORT", "C_QUARTERS", "C_LEVEL0", "C_2DELTA", "C_LATENCY",
-      "C_OLD", "C_ONE", "C_TWO", "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "STOP_AT")
+      "C_OLD", "C_ONE", "C_TWO", "C_CYCLE", "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "T2",
+      "STOP_AT")
 QUARTERS = (3 << CAL_FRAC) // 2        # below 1.5 quarters: a window of one quarter
+CYCLE = (7 << CAL_FRAC) // 2           # EDGE_TOLERANCE > 0: below 3.5 quarters, no window;
+                                       # then below 4.5 (C_QUARTERS 1), a whole cycle
 
 
-def constants(window: int, cal: int) -> dict[int, int]:
-    values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2, "C_QUARTERS": QUARTERS,
-              "C_LEVEL0": LEVEL_0, "C_2DELTA": 2 * DELTA[cal], "C_LATENCY": LATENCY, "C_OLD": OLD,
-              "C_ONE": 1, "C_TWO": 2}
+EDGE_TOLERANCE_MAX = 60       # 1/1000 slot: S + 2 DELTA stays below 2^32
+
+
+def edge_delta(edge_tolerance: int) -> int:
+    """EDGE_TOLERANCE (1/1000 slot) as an edge's error, 2^-12 quarter (rounded)."""
+    return (edge_tolerance * (4 << CAL_FRAC) + 500) // 1000
+
+
+def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
+    """The register file's constants. `edge_tolerance` (1/1000 slot, a disc without a
+    table): the windows are whole cycles (C_CYCLE), the test allows that much error at
+    each edge (C_2DELTA), and an overdue edge waits for a quarter that much wider
+    (C_LEVEL0)."""
+    if not 0 <= edge_tolerance <= EDGE_TOLERANCE_MAX:
+        raise ValueError(f"edge_tolerance = {edge_tolerance} is out of range 0..{EDGE_TOLERANCE_MAX}")
+    if cal and edge_tolerance:
+        raise ValueError("edge_tolerance must be 0 with a calibration table (cal = 1)")
+    edge = edge_delta(edge_tolerance)
+    cycles = edge_tolerance > 0
+    values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2,
+              "C_QUARTERS": (1 << CAL_FRAC) if cycles else QUARTERS, "C_LEVEL0": LEVEL_0 + 2 * edge,
+              "C_2DELTA": 2 * DELTA[cal] + (2 * edge << (V_FRAC - CAL_FRAC)), "C_LATENCY": LATENCY,
+              "C_OLD": OLD, "C_ONE": 1, "C_TWO": 2, "C_CYCLE": CYCLE if cycles else 0}
     return {RF.index(name): value for name, value in values.items()}
 
 
@@ -126,11 +154,26 @@ WRITTEN = [
     (None, "SUB", "W_POSC"),
     (None, "STORE", "T1"),                 # N1
     (None, "JMP", "NEG", "ANCHOR"),        # (a table that runs backwards: no window)
+    (None, "SUB", "C_CYCLE"),              # (EDGE_TOLERANCE > 0: fewer than a cycle's
+    (None, "JMP", "NEG", "DONE"),          # quarters: the window goes on)
     (None, "SUB", "C_QUARTERS"),
     (None, "JMP", "NEG", "CLOSE"),         # one quarter: it closes
     (None, "LOAD", "P1"),
     (None, "SUB", "C_WINDOW"),
     (None, "JMP", "NEG", "DONE"),          # more quarters: at WINDOW clocks
+    (None, "LOAD", "C_ZERO"),
+    (None, "SUB", "C_CYCLE"),
+    (None, "JMP", "NOT_NEG", "CLOSE"),     # (EDGE_TOLERANCE > 0: and whole cycles:
+    (None, "LOAD", "T1"),
+    (None, "HALF", CAL_FRAC),
+    (None, "STORE", "T0"),                 # the window's quarters A,
+    (None, "HALF", 2),
+    (None, "STORE", "T2"),                 # its cycles B = A / 4
+    (None, "SUB", "T0"),
+    (None, "ADD", "T2"),
+    (None, "ADD", "T2"),
+    (None, "ADD", "T2"),                   # 4 B - A
+    (None, "JMP", "NEG", "DONE"),          # below 0: not whole, the window goes on)
     ("CLOSE", "LOAD", "s.STIME"),          # this step anchors the next window
     (None, "STORE", "W_TIME"),
     (None, "LOAD", "s.SPOSC"),

@@ -37,14 +37,15 @@ class Velocity:
     """Clock-level model: `clock()` takes one cycle's inputs and leaves the state as
     the RTL's registers after that cycle's edge."""
 
-    def __init__(self, window: int = 512, cal: int = 0):
+    def __init__(self, window: int = 512, cal: int = 0, edge_tolerance: int = 0):
         if not 16 <= window < (1 << 30):
             raise ValueError(f"window = {window} is out of range 16..2^30-1")
         if cal not in (0, 1):
             raise ValueError(f"cal = {cal} must be 0 or 1")
         self.window = window
         self.cal = cal
-        self.engine = Engine(PROGRAM, constants(window, cal), RESTART)
+        self.edge_tolerance = edge_tolerance
+        self.engine = Engine(PROGRAM, constants(window, cal, edge_tolerance), RESTART)
         self.reset()
 
     def reset(self) -> None:

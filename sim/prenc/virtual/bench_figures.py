@@ -38,9 +38,10 @@ SOURCES = ("sim/prenc/fine/*.py", "sim/prenc/cal/*.py", "sim/prenc/core/*.py",
            "sim/prenc/virtual/goals.py", "sim/prenc/virtual/scenarios.py",
            "sim/prenc/virtual/plain_reader.py")
 
-ESTIMATORS = ("ours", "0.11", "period", "mixed", "count")
-COLOURS = {"ours": "tab:blue", "0.11": "tab:purple", "period": "tab:green", "mixed": "tab:orange",
-           "count": "tab:brown", "coarse": "0.6"}
+ESTIMATORS = ("ours", "ours, EDGE_TOLERANCE", "0.11", "period", "mixed", "count")
+BASELINE_NAMES = ("coarse", "0.11", "period", "mixed", "count")   # drawn faded beside a table
+COLOURS = {"ours": "tab:blue", "ours, EDGE_TOLERANCE": "tab:cyan", "0.11": "tab:purple", "period": "tab:green",
+           "mixed": "tab:orange", "count": "tab:brown", "coarse": "0.6"}
 
 
 def source_digest() -> str:
@@ -77,14 +78,16 @@ def accuracy(data: dict, path: Path) -> None:
         ax_p, ax_v = axes[:, col]
         rows = acc[key]
         for name in ("coarse",) + ESTIMATORS:
-            series = rows.get(name) or (acc[faded].get(name) if faded else None)
+            series = rows.get(name) or (acc[faded].get(name) if faded and name in BASELINE_NAMES else None)
             if not series:
                 continue
             dim = name not in rows
             rpm = [r[0] for r in series]
-            style = {"color": COLOURS[name], "marker": "o", "ms": 3.5, "lw": 2.2 if name == "ours" else 1.2,
+            style = {"color": COLOURS[name], "marker": "o", "ms": 3.5, "lw": 2.2 if name.startswith("ours") else 1.2,
                      "alpha": 0.35 if dim else 1.0}
-            label = {"coarse": "the quarter alone"}.get(name, name) + (" (no table)" if dim else "")
+            label = {"coarse": "the quarter alone",
+                     "ours, EDGE_TOLERANCE": f"ours, EDGE_TOLERANCE = {acc.get('edge_tolerance')}"}.get(name, name) \
+                + (" (no table)" if dim else "")
             ax_p.plot(rpm, [r[1] for r in series], label=label, **style)
             if name != "coarse":
                 ax_v.plot(rpm, [max(r[2], 1e-4) for r in series], label=label, **style)
@@ -100,7 +103,14 @@ def accuracy(data: dict, path: Path) -> None:
     axes[1, 0].text(1.2, 0.05 * 1.15, "goal: 0.05 %", fontsize=7, color="0.3")
     axes[0, 0].set_ylabel("position error, slots RMS")
     axes[1, 0].set_ylabel("velocity error, % RMS")
-    axes[0, 2].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    legend: dict[str, object] = {}
+    for ax in (axes[0, 1], axes[1, 1]):   # every series once, as the printed disc's panel has it
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            legend.setdefault(label, handle)
+    axes[0, 2].legend(list(legend.values()), list(legend), fontsize=7, loc="upper left",
+                      bbox_to_anchor=(1.02, 1.0))
+    axes[1, 2].text(0.03, 0.03, "faded: the others, without a table", transform=axes[1, 2].transAxes,
+                    fontsize=7, color="0.3")
     fig.suptitle(f"Fine position and velocity against the true angle at the instant read, steady speeds "
                  f"(make bench 9 and 10; N = {data['n']}, {data['clk_mhz']:.0f} MHz)", fontsize=10)
     fig.tight_layout()

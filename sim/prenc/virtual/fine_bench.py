@@ -56,6 +56,7 @@ POSITION_DELAY = 4              # decoder -> pos_hyb
 LOOKAHEAD_HALVES = 2 * (DECODER_DELAY + POSITION_DELAY + OUTPUT_DELAY) + 1
 
 PRINTED = Printing(edge_error=0.05, phase_deg=10, duty_a=0.45, duty_b=0.55, eccentricity=0.2, seed=7)
+PRINTED_EDGE_TOLERANCE = 31   # EDGE_TOLERANCE (1/1000 slot) for PRINTED without its table
 
 
 def rpm(value: float) -> float:
@@ -108,14 +109,15 @@ def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N, sensor
 
 
 def run_fine(sync: Sync, fine_bits: int = FINE_BITS, lookahead_halves: int = LOOKAHEAD_HALVES,
-             n: int = N, window: int = WINDOW, table=None) -> dict[str, np.ndarray]:
+             n: int = N, window: int = WINDOW, table=None, edge_tolerance: int = 0) -> dict[str, np.ndarray]:
     """The model of prenc_fine (prenc_velocity and prenc_fine_position; with `table`, a
-    calibration table's corrections, CAL = 1), clock by clock."""
+    calibration table's corrections, CAL = 1; `edge_tolerance`, EDGE_TOLERANCE),
+    clock by clock."""
     cal = int(table is not None)
     # With a table the fine position is CAL_DELAY clocks later: the board extrapolates
     # over them too (prenc_board's LOOKAHEAD_HALVES).
     fine = Fine(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves + 2 * CAL_DELAY * cal,
-                window=window, cal=cal, table=table)
+                window=window, cal=cal, table=table, edge_tolerance=edge_tolerance)
     vel = fine.velocity
     total = len(sync.step)
     v_out = np.zeros(total)
@@ -340,6 +342,13 @@ def evaluate(case: Case, printing: Printing | None, table=None, sensors=()) -> d
     for name, velocity in baseline_velocities(sync).items():
         rows[name] = score(case, sync, interpolate(sync, velocity) / scale, velocity)
     return rows
+
+
+def evaluate_ours(case: Case, printing: Printing | None, edge_tolerance: int = 0) -> Row:
+    """Ours alone in one case, with EDGE_TOLERANCE (no table)."""
+    sync = sync_stream(case.theta, printing)
+    ours = run_fine(sync, edge_tolerance=edge_tolerance)
+    return score(case, sync, ours["fine"] / (1 << FINE_BITS), ours["velocity"])
 
 
 def whole_turns_case(rpm_value: float, turns: int = 1) -> Case:

@@ -189,6 +189,40 @@ def test_velocity_reads_zero_within_two_edge_periods_of_a_stop(braking_ms):
     assert (out["velocity"][zero:] == 0).all() and out["velocity_valid"][zero:].all()
 
 
+@pytest.mark.parametrize("rpm", [100, 600, 6000])
+def test_a_printed_disc_without_its_table_reads_its_speed_with_edge_tolerance(rpm):
+    # The printed disc, no table: with EDGE_TOLERANCE (whole-cycle windows) the velocity
+    # is within 2.5 % RMS and 5 % at every clock of the true speed; without it, not.
+    theta = steady(rpm, slots=max(48.0, 60 * fb.rpm(rpm) * fb.WINDOW / fb.CLK_HZ))
+    sync = fb.sync_stream(theta, fb.PRINTED)
+    c = np.arange(len(theta) // 2, len(theta) - 1)
+    truth = 4 * fb.rpm(rpm) / fb.CLK_HZ
+    errors = {}
+    for tol in (0, fb.PRINTED_EDGE_TOLERANCE):
+        out = fb.run_fine(sync, edge_tolerance=tol)
+        assert out["velocity_valid"][c].all()
+        v_err = np.abs(out["velocity"][c] - truth) / truth
+        errors[tol] = (np.sqrt(np.mean(v_err ** 2)), v_err.max())
+    rms, worst = errors[fb.PRINTED_EDGE_TOLERANCE]
+    assert rms <= 0.025 and worst <= 0.05, errors
+    assert errors[0][1] > 0.05, errors
+
+
+def test_a_stop_on_a_printed_disc_reads_zero_with_edge_tolerance():
+    # An overdue edge waits for a quarter 2 EDGE_TOLERANCE wider: the stop reads 0 within
+    # 1.5 (1.25 + 2 x 0.124) = 2.25 nominal edge periods, and nothing reads 0 before it.
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 6e-3)
+    stopped = len(traj.theta) + fb.DECODER_DELAY
+    theta = traj.rest(4e-3).theta
+    sync = fb.sync_stream(theta, fb.PRINTED)
+    out = fb.run_fine(sync, edge_tolerance=fb.PRINTED_EDGE_TOLERANCE)
+    period = fb.CLK_HZ / (4 * fb.rpm(600))
+    zero = np.flatnonzero(out["velocity"] == 0)
+    zero = zero[zero > 3e-3 * fb.CLK_HZ][0]
+    assert 0 < zero - stopped <= 2.3 * period, ((zero - stopped) / period)
+    assert (out["velocity"][zero:] == 0).all() and out["velocity_valid"][zero:].all()
+
+
 def test_the_velocity_never_points_against_the_last_step():
     theta = (Trajectory(clk_hz=1, start=50.4).constant(0.01, 3000)
              .random_walk(60_000, max_speed=0.02, seed=3, knot_seconds=700).theta)
@@ -265,7 +299,8 @@ def test_without_a_velocity_the_fraction_is_the_quarters_middle():
     assert fine.fine_pos == 37 * 16 + 8 and fine.valid and not fine.interpolated
 
 
-@pytest.mark.parametrize("kwargs", [{"window": 8}, {"window": 1 << 30}, {"cal": 2}])
+@pytest.mark.parametrize("kwargs", [{"window": 8}, {"window": 1 << 30}, {"cal": 2}, {"edge_tolerance": -1},
+                                    {"edge_tolerance": 61}, {"cal": 1, "edge_tolerance": 5}])
 def test_velocity_parameters_out_of_range_are_refused(kwargs):
     with pytest.raises(ValueError):
         Velocity(**kwargs)

@@ -6,9 +6,11 @@ The stimulus is what the quadrature decoder gives the block on a disc that start
 rest, accelerates, turns, reverses smoothly and at once, wanders, stops, crawls and
 starts again; a few illegal transitions are mixed in. With CAL = 1 the disc is a
 printed one and the corrections of each quarter's edges come with its steps, as
-prenc_fine gives them from the calibration table. A small WINDOW makes the windows
+prenc_fine gives them from the calibration table; with EDGE_TOLERANCE the disc is the
+same printed one, without its table. A small WINDOW makes the windows
 close often. The test counts the instructions the program ran, and requires every
-one of them but the drop of an old anchor (2^30 clocks; sim/tests/fine has it).
+one of them but the drop of an old anchor (2^30 clocks; sim/tests/fine has it) and the
+test for whole cycles, which the run with EDGE_TOLERANCE requires.
 Each run draws its stimulus; PRENC_VELOCITY_SEED=<seed> replays a draw.
 """
 
@@ -37,9 +39,12 @@ PRINTED = Printing(edge_error=0.03, phase_deg=5, duty_a=0.47, duty_b=0.53, eccen
 # The drop of an old anchor (2^30 clocks without a step): FLAG ANCH 0, JMP IDLE.
 OLD_ANCHOR = [k for k, row in enumerate(SOURCE) if row[1:] == ("FLAG", "ANCH", 0)][0]
 NEVER = (OLD_ANCHOR, OLD_ANCHOR + 1)
+# The test for whole cycles, which only EDGE_TOLERANCE > 0 runs.
+_FIRST = next(k for k, row in enumerate(SOURCE) if row[1:] == ("JMP", "NOT_NEG", "CLOSE")) + 1
+WHOLE_CYCLES = tuple(range(_FIRST, next(k for k, row in enumerate(SOURCE) if row[0] == "CLOSE")))
 
 
-def stimulus(seed: int, cal: int) -> dict[str, np.ndarray]:
+def stimulus(seed: int, cal: int, printed: bool) -> dict[str, np.ndarray]:
     """The decoder's outputs and the corrections, clock by clock (clk_hz = 1)."""
     r = np.random.default_rng(seed)
     traj = (Trajectory(clk_hz=1, start=10.4)
@@ -69,7 +74,7 @@ def stimulus(seed: int, cal: int) -> dict[str, np.ndarray]:
             .rest(600)                         # stopped at once
             .constant(-0.004, 1000)
             .accelerate(-0.03, 3000))
-    sync = sync_stream(traj.theta, PRINTED if cal else None, n=N)
+    sync = sync_stream(traj.theta, PRINTED if printed else None, n=N)
     total = len(traj.theta)
     illegal = np.zeros(total, dtype=np.int8)
     for c in r.choice(np.arange(5000, total - 10), size=4, replace=False):
@@ -90,10 +95,10 @@ def stimulus(seed: int, cal: int) -> dict[str, np.ndarray]:
 @cocotb.test()
 async def matches_the_model_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_VELOCITY_SEED", rng().randrange(1 << 30)))
-    cal = int(dut.CAL.value)
-    inputs = stimulus(seed, cal)
+    cal, edge_tolerance = int(dut.CAL.value), int(dut.EDGE_TOLERANCE.value)
+    inputs = stimulus(seed, cal, printed=bool(cal or edge_tolerance))
     total = len(inputs["step"])
-    model = Velocity(window=WINDOW, cal=cal)
+    model = Velocity(window=WINDOW, cal=cal, edge_tolerance=edge_tolerance)
     names = ("step", "step_cw", "illegal", "c_lo", "c_hi")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
     ran = [0] * len(PROGRAM)
@@ -105,13 +110,18 @@ async def matches_the_model_clock_by_clock(dut):
         model.clock(now["step"], now["step_cw"], now["illegal"], 0, lo_s[c], hi_s[c])
         expected = {"velocity": model.velocity & 0xFFFF_FFFF, "valid": model.valid}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
-    missing = [k for k, n in enumerate(ran) if n == 0 and k not in NEVER]
-    dut._log.info("seed %d, CAL %d: %d clocks; instructions never run: %s", seed, cal, total,
+    if edge_tolerance:   # the rest of the program: the runs without EDGE_TOLERANCE
+        missing = [k for k in WHOLE_CYCLES if ran[k] == 0]
+    else:
+        missing = [k for k, n in enumerate(ran) if n == 0 and k not in NEVER + WHOLE_CYCLES]
+    dut._log.info("seed %d, CAL %d, EDGE_TOLERANCE %d: %d clocks; instructions never run: %s",
+                  seed, cal, edge_tolerance, total,
                   [(k, SOURCE[k]) for k in missing])
     assert not missing
 
 
-@pytest.mark.parametrize("cal", [0, 1])
+@pytest.mark.parametrize("cal, edge_tolerance", [(0, 0), (1, 0), (0, 31)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_velocity(simulator, cal):
-    run(__file__, TOPLEVEL, simulator, parameters={"WINDOW": WINDOW, "CAL": cal})
+def test_prenc_velocity(simulator, cal, edge_tolerance):
+    run(__file__, TOPLEVEL, simulator, parameters={"WINDOW": WINDOW, "CAL": cal,
+                                                   "EDGE_TOLERANCE": edge_tolerance})
