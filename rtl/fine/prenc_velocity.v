@@ -142,8 +142,8 @@ module prenc_velocity #(
   reg [31:0]        acc_reg;
   reg [31:0]        low_reg;
   reg [7:0]         left_reg;       // steps left of DIV, MUL, HALF, while they run
-  reg               going_reg;      // ... they run: the first clock (DIV's and MUL's: the
-                                    // operand taken) is over
+  reg               going_reg;      // ... they run: their first clock is over (DIV's and
+                                    // MUL's first clock takes no step)
   reg               ovf_reg;        // a quotient bit went above bit 30
   reg               anch_reg;       // flags
   reg               have_reg;
@@ -152,7 +152,6 @@ module prenc_velocity #(
   reg [31:0]        rd_reg;         // the word the instruction reads
   reg [31:0]        spec_reg;       // ... or its special, registered the clock before
   reg               use_spec_reg;   // ... which of them
-  reg [31:0]        op_reg;         // DIV's and MUL's operand, from their first step
 
   integer i;
   initial begin
@@ -182,13 +181,14 @@ module prenc_velocity #(
   wire [4:0]  next_a    = ins[4:0];   // program: a special and its number, or a word's address
   wire        unused_special = ins[20];   // (this instruction's: next_s of the one before)
 
-  // The operand: the register file's word, or the special, both fetched the clock before.
-  wire [31:0] operand = use_spec_reg ? spec_reg : rd_reg;
+  // The operand: the register file's word, or the special, both fetched the clock before
+  // (DIV's and MUL's: always the register file's).
+  wire [31:0] operand = (use_spec_reg && !stepping) ? spec_reg : rd_reg;
 
   // Iterating instructions: the step count, this one included.
   wire        iterates  = (op == OP_HALF) || (op == OP_DIV) || (op == OP_MUL);
   wire [7:0]  left_now  = going_reg ? left_reg : n;   // the steps left, this one's with
-  wire        taking    = stepping && !going_reg;    // DIV's, MUL's first: the operand
+  wire        taking    = stepping && !going_reg;    // DIV's, MUL's first clock: no step
   wire        stay      = (iterates && (taking || left_now != 8'd1)) ||
                           ((op == OP_WAIT) && (age_reg < {1'b0, n}));
   wire        abort     = (op == OP_DIV) && abortable && pend_reg;
@@ -196,17 +196,32 @@ module prenc_velocity #(
   // One adder: LOAD 0 + operand, ADD acc + operand, SUB ~(~acc + operand) = acc -
   // operand, a division's step ~(~shifted + divisor) = shifted - divisor (it fits
   // without a carry), a multiplication's shifted + operand (when low's top bit is 1).
-  // The inversions are on the accumulator's side, off the register file's path; DIV and
-  // MUL take their operand on their first clock (op_reg), while the register file
-  // fetches the next instruction's.
+  // The inversions are on the accumulator's side, off the register file's path. While
+  // DIV and MUL step, the register file reads their own operand again (it holds still:
+  // nothing is stored meanwhile) and fetches the next instruction's on their last step.
   wire [31:0] shifted   = {acc_reg[30:0], stepping & !mul & low_reg[31]};
   wire [31:0] add_a     = stepping ? (mul ? shifted : ~shifted)
                         : load ? 32'd0 : invert ? ~acc_reg : acc_reg;
-  wire [31:0] add_b     = stepping ? op_reg : operand;
-  wire [32:0] sum       = {1'b0, add_a} + {1'b0, add_b};
+  wire [32:0] sum       = {1'b0, add_a} + {1'b0, operand};
   wire        fits      = !sum[32];   // shifted >= divisor
   wire        high_step = (op == OP_DIV) && going_reg && !abort && (left_reg > 8'd31);
-  wire [31:0] diff      = ~sum[31:0];
+  wire        inverted  = (op == OP_SUB) || ((op == OP_DIV) && fits);   // ~sum: a difference
+  wire [31:0] result    = sum[31:0] ^ {32{inverted}};
+
+  // The accumulator's next value: the adder's result, the shifted accumulator (a
+  // division's or a multiplication's step that does not add), or as the op says.
+  wire        stepping_now = going_reg && ((op == OP_MUL) || ((op == OP_DIV) && !abort));
+  wire        adds         = (op == OP_LOAD) || (op == OP_ADD) || (op == OP_SUB) ||
+                             (stepping_now && ((op == OP_MUL) ? low_reg[31] : fits));
+  reg  [31:0] acc_next;
+  always @(*) begin
+    acc_next = acc_reg;
+    if (adds) acc_next = result;
+    else if (stepping_now) acc_next = shifted;
+    else if (op == OP_HALF) acc_next = {acc_reg[31], acc_reg[31:1]};
+    else if (op == OP_NUM) acc_next = 32'd0;
+    else if (op == OP_QUOT) acc_next = ovf_reg ? 32'h7fff_ffff : low_reg;
+  end
 
   // The conditions.
   reg taken;
@@ -245,10 +260,11 @@ module prenc_velocity #(
     .restart (restart_pc)
   );
 
-  wire        write = (op == OP_STORE) && !rst;
+  wire        write  = (op == OP_STORE) && !rst;
+  wire [4:0]  read_a = (stepping && stay && !abort) ? a : next_a;   // DIV, MUL: their own
   always @(posedge clk) begin
     if (write) rf[a] <= acc_reg;
-    rd_reg <= rf[next_a];
+    rd_reg <= rf[read_a];
   end
 
   // The specials, selected for the instruction after this one and registered.
@@ -269,7 +285,7 @@ module prenc_velocity #(
   wire        to_zero    = integrated[32] || integrated[31];   // below 0, or 2^31 and above
   wire        out        = (op == OP_OUT);
   wire        out_speed  = out && (a[1:0] != 2'd2);
-  wire [SB-1:0] loaded   = acc_reg[31] ? {SB{1'b0}} : acc_reg[30:0];
+  wire        speed_zero = out_speed ? acc_reg[31] : to_zero;   // (and a restart, rst)
 
   // The step held, and the quarter's width.
   wire        done     = (op == OP_DONE);
@@ -277,8 +293,11 @@ module prenc_velocity #(
   wire        capture  = step && (!pend_reg || done || reversal);
   wire [CB-1:0] count_next = count_reg + 1'b1;
   wire [15:0] crossed  = (CAL == 1) ? (step_cw ? c_lo : c_hi) : 16'd0;
-  wire [31:0] place    = {count_next, {CAL_FRAC{1'b0}}} +
-                         (step_cw ? {{16{crossed[15]}}, crossed} : -{{16{crossed[15]}}, crossed});
+  // The place: count_next 2^12 + (step_cw ? crossed : -crossed), with CAL = 1 -crossed
+  // as ~crossed + 1, the 1 in count_next 2^12's low bits (0).
+  wire [31:0] place    = (CAL == 1) ? {count_next, {(CAL_FRAC - 1){1'b0}}, ~step_cw} +
+                                      ({{16{crossed[15]}}, crossed} ^ {32{~step_cw}})
+                                    : {count_next, {CAL_FRAC{1'b0}}};
   wire signed [16:0] width_c = (CAL == 1) ? $signed({c_hi[15], c_hi}) - $signed({c_lo[15], c_lo})
                                           : 17'sd0;
   wire signed [16:0] width_w = (width_c < WIDTH_LO) ? WIDTH_LO : (width_c > WIDTH_HI) ? WIDTH_HI
@@ -292,22 +311,12 @@ module prenc_velocity #(
     left_reg  <= taking ? n : left_now - 1'b1;
     going_reg <= stay && iterates && !abort;
     case (op)
-      OP_LOAD, OP_ADD: acc_reg <= sum[31:0];
-      OP_SUB:   acc_reg <= diff;
-      OP_MUL:   if (going_reg) acc_reg <= low_reg[31] ? sum[31:0] : shifted;
-      OP_HALF:  acc_reg <= {acc_reg[31], acc_reg[31:1]};
-      OP_NUM: begin
-        low_reg <= acc_reg;
-        acc_reg <= 32'd0;
-      end
+      OP_NUM:   low_reg <= acc_reg;
       OP_DIV: begin
-        if (!going_reg) op_reg <= rd_reg;
         if (!abort && going_reg) begin
-          acc_reg <= fits ? diff : shifted;
           low_reg <= {low_reg[30:0], fits};
         end
       end
-      OP_QUOT:  acc_reg <= ovf_reg ? 32'h7fff_ffff : low_reg;
       OP_FLAG: begin
         case (a[1:0])
           2'd0:    anch_reg <= n[0];
@@ -318,27 +327,20 @@ module prenc_velocity #(
       default: ;
     endcase
     // The quotient's overflow: a bit that fits, in a step whose bit ends above bit 30.
+    acc_reg <= acc_next;
     ovf_reg <= (op != OP_NUM) && (ovf_reg || (fits && high_step));
     if (op == OP_MUL) begin
-      if (!going_reg) op_reg <= rd_reg;
-      else low_reg <= {low_reg[30:0], 1'b0};
+      if (going_reg) low_reg <= {low_reg[30:0], 1'b0};
     end
 
-    // The output, the speed and the acceleration.
-    velocity_reg <= cw_reg ? $signed({1'b0, speed_reg}) : -$signed({1'b0, speed_reg});
-    if (to_zero) begin
-      speed_reg <= {SB{1'b0}};
-      accel_reg <= 32'sd0;
-    end else begin
-      speed_reg <= integrated[SB-1:0];
-    end
-    if (out_speed) begin
-      speed_reg <= loaded;
-      valid_reg <= 1'b1;
-      if (a[1:0] == 2'd0) accel_reg <= 32'sd0;
-    end else if (out) begin
-      accel_reg <= acc_reg;
-    end
+    // The output (the speed, negated as ~speed + 1 against the direction), the speed and
+    // the acceleration.
+    velocity_reg <= ({1'b0, speed_reg} ^ {32{~cw_reg}}) + {31'd0, ~cw_reg};
+    if (speed_zero) speed_reg <= {SB{1'b0}};
+    else speed_reg <= out_speed ? acc_reg[SB-1:0] : integrated[SB-1:0];
+    if (out && !out_speed) accel_reg <= acc_reg;
+    else if (to_zero || (out_speed && a[1:0] == 2'd0)) accel_reg <= 32'sd0;
+    if (out_speed) valid_reg <= 1'b1;
     if (done) pend_reg <= 1'b0;
 
     // The steps.
