@@ -546,6 +546,9 @@ def sensors_section() -> None:
     calibrated_jitter_rows()
 
 
+NOISY_EDGE_TOLERANCE = 5   # the sensors' crossing noise of 0.005 slot RMS, beyond the table
+
+
 def calibrated_jitter_rows() -> None:
     """Issue 60 item 2's goal: the printed disc with section 10's table (CAL = 1), its A and
     B through crossing jitter, the fine position and the velocity at 600 and 6,000 rpm."""
@@ -556,20 +559,28 @@ def calibrated_jitter_rows() -> None:
     c_true = cb.truth()
     table = cb.bench_table(c_true).table.c
     zero = -float(c_true.mean()) / 4
-    print("\n   The calibrated printed disc (section 10's table, CAL = 1) through crossing jitter on A and B:")
-    print(f"   {'rpm':>6} {'jitter':>7} {'position, slots RMS / max':>27} {'velocity, % RMS / max':>23}")
-    worst = 0.0
-    for rpm_value in (600, 6000):
+    tol = NOISY_EDGE_TOLERANCE
+    print("\n   The calibrated printed disc (section 10's table, CAL = 1) through crossing jitter on A and B,")
+    print(f"   and the same with EDGE_TOLERANCE = {tol} (the sensors' noise beyond the table):")
+    print(f"   {'rpm':>6} {'jitter':>7} {'position, slots RMS / max':>27} {'velocity, % RMS / max':>23}"
+          f" {'EDGE_TOLERANCE: position':>26} {'velocity':>16}")
+    worst = worst_v = 0.0
+    for rpm_value in (100, 600, 6000):
         case = next(c for c in fb.cases() if c.name == f"{rpm_value} rpm")
         for sigma in (0.0, 0.005):
             sensors = (CrossingJitter(sigma=sigma, seed=1),) if sigma else ()
             r = cb.evaluate(case, table, zero, sensors=sensors)["calibrated"]
+            t = cb.evaluate(case, table, zero, sensors=sensors, edge_tolerance=tol)["calibrated"]
             print(f"   {rpm_value:>6} {sigma:>7.4f} {r.fine[0]:>14.5f} / {r.fine[1]:.4f} "
-                  f"{r.velocity[0]:>12.4f} / {r.velocity[1]:.3f}")
-            if sigma:
-                worst = max(worst, r.fine[0])
+                  f"{r.velocity[0]:>12.4f} / {r.velocity[1]:.3f} {t.fine[0]:>17.5f} / {t.fine[1]:.4f}"
+                  f" {t.velocity[0]:>8.4f} / {t.velocity[1]:.3f}")
+            if sigma and rpm_value != 100:
+                worst = max(worst, r.fine[0], t.fine[0])
+                worst_v = max(worst_v, t.velocity[1])
     print(f"   Goal (issue 60): <= 0.0025 slot RMS with 0.005 slot of jitter: worst {worst:.4f}: "
           f"{'met' if worst <= 0.0025 else 'MISSED (the fine position follows the last edge: one edge, its noise)'}")
+    print(f"   Goal (issue 60): velocity within 0.05 % at 600 and 6,000 rpm with it, EDGE_TOLERANCE = {tol}: "
+          f"worst {worst_v:.3f} % max: {'met' if worst_v <= 0.05 else 'MISSED'}")
 
 
 def health_section() -> bool:

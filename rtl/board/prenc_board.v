@@ -77,9 +77,9 @@
 //                 link (WRITE_CAL) or built in from CAL_FILE; 0: the nominal edges (default)
 //   CAL_FILE      with CAL = 1: the table ($readmemh, prenc.cal.table's format, checked in
 //                 simulation); "" : all zero until written
-//   EDGE_TOLERANCE  with CAL = 0, a printed disc without its table: how far its edges
-//                 may be off their places, 1/1000 slot, 0..60 (docs/fine.md; default 0:
-//                 exact)
+//   EDGE_TOLERANCE  how far the edges may be off their places (nominal, or with CAL = 1
+//                 the table's: a printed disc without its table, a noisy sensor), 1/1000
+//                 slot, 0..60 (docs/fine.md; default 0: exact)
 //   HEALTH        1: the warning before a failure is built (prenc_health; default); 0:
 //                 not (nW only in a reduced mode: the iCEstick's HX1K has no room)
 //   WARN_SLOTS, WARN_BURST   prenc_health's: a source warns when its corrections come

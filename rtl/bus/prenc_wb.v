@@ -57,8 +57,8 @@
 // N + 2 + FINE_BITS <= 32, 0 with FINE = 0), EXTRAPOLATE (1), VELOCITY_WINDOW (the
 // velocity's window, 34 us in clocks: 1024 at 30 MHz, the default; docs/fine.md),
 // CAL (1: the calibration table, with FINE = 1 and N <= 16; 0: not, default) and
-// CAL_FILE (the table it starts with; "" : all zero); EDGE_TOLERANCE (with CAL = 0, a
-// printed disc without its table: prenc_velocity's, docs/fine.md); WARN_SLOTS, WARN_BURST
+// CAL_FILE (the table it starts with; "" : all zero); EDGE_TOLERANCE (how far the
+// edges may be off their places: prenc_velocity's, docs/fine.md); WARN_SLOTS, WARN_BURST
 // (prenc_health's).
 
 `resetall

@@ -34,8 +34,8 @@
 //   CAL        1: with the calibration table (N 2..16); 0: without (default)
 //   CAL_FILE   with CAL = 1: the table's file ($readmemh, prenc.cal.table's format);
 //              "" : all zero until written
-//   EDGE_TOLERANCE   with CAL = 0: how far the disc's edges may be off their places,
-//              1/1000 slot (prenc_velocity's; 0: exact; docs/fine.md)
+//   EDGE_TOLERANCE   how far the edges may be off their places (nominal, or the
+//              table's), 1/1000 slot (prenc_velocity's; 0: exact; docs/fine.md)
 //
 // Ports: as prenc_velocity's and prenc_fine_position's, and
 //   velocity   quarters per clock x 2^32, signed (the Wishbone register's and the host

@@ -8,13 +8,14 @@ The estimator, in the engine's words (docs/fine.md):
   acceleration shows at the next edge), else to the first step at least WINDOW clocks
   later: N1 (the distance between the two edges' true places, 2^-12 quarter) in P1
   clocks. Its mean speed V1 = N1 / P1 (2^-32 quarter per clock).
-- With EDGE_TOLERANCE (a disc without a table whose edges are off their places by
-  up to about that much: a printed disc), a window is whole cycles: it closes at the
+- With EDGE_TOLERANCE (edges off the places the velocity takes them at by up to about
+  that much: a printed disc without its table, or a noisy sensor), a window is whole
+  cycles: it closes at the
   first step at least 3.5 quarters from its anchor (4 quarters, so that A's and B's
   duty cycles and phase cancel) if that is at least WINDOW / 2 clocks later, else at
   the first step at least WINDOW clocks later that is whole cycles from it.
 - The constant-speed test: |V1 - S| < 2 (S + 2 DELTA) / P1, S the speed as it is,
-  DELTA an edge's residual error with a calibration table, or EDGE_TOLERANCE. A
+  DELTA an edge's residual error with a calibration table, and EDGE_TOLERANCE. A
   window's mean is off by less than (S + 2 DELTA) / P1 (a clock's quantization at
   each end, DELTA at each edge); twice that leaves room for the speed's own error.
   - Passed: S <- S + (V1 - S) / 2^RUN_SHIFT, acceleration 0: the speed is a running
@@ -84,14 +85,13 @@ def edge_delta(edge_tolerance: int) -> int:
 
 
 def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
-    """The register file's constants. `edge_tolerance` (1/1000 slot, a disc without a
-    table): the windows are whole cycles (C_CYCLE), the test allows that much error at
-    each edge (C_2DELTA), and an overdue edge waits for a quarter that much wider
-    (C_LEVEL0)."""
+    """The register file's constants. `edge_tolerance` (1/1000 slot): how far the edges
+    may be off the places the velocity takes them at (the nominal ones; with a table,
+    the table's: then the sensors' noise). The windows are whole cycles (C_CYCLE), the
+    test allows that much more error at each edge (C_2DELTA), and an overdue edge waits
+    for a quarter that much wider (C_LEVEL0)."""
     if not 0 <= edge_tolerance <= EDGE_TOLERANCE_MAX:
         raise ValueError(f"edge_tolerance = {edge_tolerance} is out of range 0..{EDGE_TOLERANCE_MAX}")
-    if cal and edge_tolerance:
-        raise ValueError("edge_tolerance must be 0 with a calibration table (cal = 1)")
     edge = edge_delta(edge_tolerance)
     cycles = edge_tolerance > 0
     values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2,

@@ -62,16 +62,18 @@ def bench_table(c_true: np.ndarray) -> Result:
     return calibrate(record, CAL_TURNS)
 
 
-def evaluate(case: fb.Case, table_c: np.ndarray, zero: float, sensors=()) -> dict[str, fb.Row]:
+def evaluate(case: fb.Case, table_c: np.ndarray, zero: float, sensors=(),
+             edge_tolerance: int = 0) -> dict[str, fb.Row]:
     """The printed disc without and with the table (prenc_fine with CAL = 1: the table
     block prenc.cal.lookup gives prenc_velocity and prenc_fine_position the corrections
     of their quarters' edges), beside the baselines (without the table: they have none);
     `zero` (slots) is the calibration's zero against the truth, taken off the calibrated
-    position's error; `sensors`: prenc.virtual.sensors' effects on A and B."""
+    position's error; `sensors`: prenc.virtual.sensors' effects on A and B;
+    `edge_tolerance`: the calibrated run's EDGE_TOLERANCE."""
     sync = fb.sync_stream(case.theta, fb.PRINTED, sensors=sensors)
     scale = 1 << fb.FINE_BITS
     plain = fb.run_fine(sync)
-    cal = fb.run_fine(sync, table=table_c)
+    cal = fb.run_fine(sync, table=table_c, edge_tolerance=edge_tolerance)
     rows = {"coarse": fb.score(case, sync, sync.pos_hyb.astype(np.float64), np.zeros(len(case.theta))),
             "uncalibrated": fb.score(case, sync, plain["fine"] / scale, plain["velocity"]),
             "calibrated": fb.score(case, sync, cal["fine"] / scale - 4 * zero, cal["velocity"])}

@@ -208,6 +208,23 @@ def test_a_printed_disc_without_its_table_reads_its_speed_with_edge_tolerance(rp
     assert errors[0][1] > 0.05, errors
 
 
+def test_a_noisy_sensor_reads_its_speed_with_edge_tolerance_and_a_table():
+    # Crossing jitter of 0.005 slot RMS on A and B, the printed disc with its table: at
+    # 6,000 rpm EDGE_TOLERANCE = 5 keeps the velocity within 0.1 % at every clock (the
+    # bench: 0.032 %), at least 4 times closer than without it.
+    from prenc.virtual.sensors import CrossingJitter
+
+    theta = steady(6000, slots=max(48.0, 60 * fb.rpm(6000) * fb.WINDOW / fb.CLK_HZ))
+    sync = fb.sync_stream(theta, fb.PRINTED, sensors=(CrossingJitter(sigma=0.005, seed=1),))
+    c = np.arange(len(theta) // 2, len(theta) - 1)
+    truth = 4 * fb.rpm(6000) / fb.CLK_HZ
+    worst = {}
+    for tol in (0, 5):
+        out = fb.run_fine(sync, table=calibrated_table(), edge_tolerance=tol)
+        worst[tol] = np.max(np.abs(out["velocity"][c] - truth)) / truth
+    assert worst[5] <= 0.001 and worst[0] >= 4 * worst[5], worst
+
+
 def test_a_stop_on_a_printed_disc_reads_zero_with_edge_tolerance():
     # An overdue edge waits for a quarter 2 EDGE_TOLERANCE wider: the stop reads 0 within
     # 1.5 (1.25 + 2 x 0.124) = 2.25 nominal edge periods, and nothing reads 0 before it.
@@ -300,7 +317,7 @@ def test_without_a_velocity_the_fraction_is_the_quarters_middle():
 
 
 @pytest.mark.parametrize("kwargs", [{"window": 8}, {"window": 1 << 30}, {"cal": 2}, {"edge_tolerance": -1},
-                                    {"edge_tolerance": 61}, {"cal": 1, "edge_tolerance": 5}])
+                                    {"edge_tolerance": 61}])
 def test_velocity_parameters_out_of_range_are_refused(kwargs):
     with pytest.raises(ValueError):
         Velocity(**kwargs)

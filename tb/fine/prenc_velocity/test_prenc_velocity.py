@@ -6,8 +6,8 @@ The stimulus is what the quadrature decoder gives the block on a disc that start
 rest, accelerates, turns, reverses smoothly and at once, wanders, stops, crawls and
 starts again; a few illegal transitions are mixed in. With CAL = 1 the disc is a
 printed one and the corrections of each quarter's edges come with its steps, as
-prenc_fine gives them from the calibration table; with EDGE_TOLERANCE the disc is the
-same printed one, without its table. A small WINDOW makes the windows
+prenc_fine gives them from the calibration table; with EDGE_TOLERANCE and CAL = 0 the
+disc is the same printed one, without its table. A small WINDOW makes the windows
 close often. The test counts the instructions the program ran, and requires every
 one of them but the drop of an old anchor (2^30 clocks; sim/tests/fine has it) and the
 test for whole cycles, which the run with EDGE_TOLERANCE requires.
@@ -120,7 +120,7 @@ async def matches_the_model_clock_by_clock(dut):
     assert not missing
 
 
-@pytest.mark.parametrize("cal, edge_tolerance", [(0, 0), (1, 0), (0, 31)])
+@pytest.mark.parametrize("cal, edge_tolerance", [(0, 0), (1, 0), (0, 31), (1, 5)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
 def test_prenc_velocity(simulator, cal, edge_tolerance):
     run(__file__, TOPLEVEL, simulator, parameters={"WINDOW": WINDOW, "CAL": cal,
