@@ -16,8 +16,7 @@
 //   UART:   RX pin 6, TX pin 9, to the on-board FTDI (second interface)
 //   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
-//   UVW = 1: U, V, W on LED1, LED2, LED3 (PMOD2 pins 1 to 3 without the snap-off), and
-//   no warning before a failure (prenc_health): the UP5K has no room for both.
+//   UVW = 1: U, V, W on LED1, LED2, LED3 (PMOD2 pins 1 to 3 without the snap-off).
 //   With CAL = 1 neither SPI nor ABI nor the warning before a failure (prenc_health: nW
 //   only in a reduced mode): the table and the edges' capture take their room.
 //
@@ -90,9 +89,9 @@ module prenc_icebreaker #(
 
   localparam integer CLK_HZ = 30000000;
   // With the calibration table the UP5K has no room for the drives' SPI and ABI, nor for
-  // the warning; with UVW, none for the warning.
+  // the warning.
   localparam integer DRIVES = (CAL == 1) ? 0 : 1;
-  localparam integer HEALTH = (CAL == 1 || UVW == 1) ? 0 : 1;
+  localparam integer HEALTH = (CAL == 1) ? 0 : 1;
 
   generate
     if (UVW != 0 && UVW != 1) begin : g_bad_uvw

@@ -57,8 +57,8 @@ def test_the_icebreaker_with_the_calibration_table_meets_its_clock():
 
 
 def test_the_icebreaker_with_uvw_meets_its_clock():
-    """`make synth BOARD=icebreaker PARAMS="UVW=1"`: U, V, W on the snap-off's LED pins, the
-    warning left out for their room; it meets 30 MHz with one of the board seeds."""
+    """`make synth BOARD=icebreaker PARAMS="UVW=1"`: U, V, W on the snap-off's LED pins,
+    beside the warning; it meets 30 MHz with one of the board seeds."""
     out = SIM_BUILD / "boards" / "icebreaker-uvw"
     result = synth.board_build(synth.BOARDS["icebreaker"], 10, out, extra={"UVW": 1})
     assert result.timing_met
