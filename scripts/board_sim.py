@@ -6,6 +6,7 @@
                                 [--misreads 0.01] [--dead-head 2] [--missed-states 3]
                                 [--seconds 0] [--clock-mhz 30 --baud 3000000]
                                 [--fine-bits 0] [--printed] [--cal [--cal-file disc.cal]]
+                                [--edge-tolerance 31]
 
 prenc_board runs on Verilator (tb/board/prenc_board/virtual_board.py), driven by the
 virtual encoder; its UART is a pseudo-terminal whose name this prints. In another
@@ -25,7 +26,9 @@ times closer to real time. Stop it with Ctrl-C, or give --seconds of board time.
 slot, phase 10 degrees, duty 45/55 %, eccentricity 0.2 slot; prenc.virtual.printing).
 --cal builds the board with its calibration table (CAL = 1), empty or from --cal-file;
 then `prenc calibrate --port /dev/pts/N --out disc.cal --apply` calibrates it
-(docs/calibration.md).
+(docs/calibration.md). --edge-tolerance builds it with EDGE_TOLERANCE (1/1000 slot:
+how far the edges may be off their places; 31 for --printed without --cal;
+docs/fine.md).
 """
 
 from __future__ import annotations
@@ -63,6 +66,8 @@ def parse(argv=None) -> argparse.Namespace:
     p.add_argument("--printed", action="store_true", help="a printed disc (the bench's) instead of the ideal one")
     p.add_argument("--cal", action="store_true", help="build the board with its calibration table (CAL = 1)")
     p.add_argument("--cal-file", help="with --cal: the table it starts with (default: all zero)")
+    p.add_argument("--edge-tolerance", type=int, default=0, choices=range(61), metavar="0..60",
+                   help="EDGE_TOLERANCE, 1/1000 slot (default 0; 31 for --printed without --cal)")
     args = p.parse_args(argv)
     if args.clock_mhz * 1_000_000 < 4 * args.baud:
         p.error(f"--baud {args.baud} needs at least 4 clocks per bit: --clock-mhz >= {4 * args.baud / 1e6:g}")
@@ -75,6 +80,23 @@ def parse(argv=None) -> argparse.Namespace:
     return args
 
 
+def board_parameters(args: argparse.Namespace, clk_hz: int) -> dict[str, object]:
+    """prenc_board's parameters for the options."""
+    n = args.bits
+    taps = sum(1 << (t - 1) for t in Disc(n).taps)
+    parameters: dict[str, object] = {"N": n, "TAPS": taps, "FILTER": args.filter, "ROM_FILE": rom_file(n),
+                                     "CLK_HZ": clk_hz, "BAUD": args.baud}
+    if args.fine_bits:
+        parameters["FINE_BITS"] = args.fine_bits
+    if args.cal:
+        parameters["CAL"] = 1
+        if args.cal_file:
+            parameters["CAL_FILE"] = str(Path(args.cal_file).resolve())
+    if args.edge_tolerance:
+        parameters["EDGE_TOLERANCE"] = args.edge_tolerance
+    return parameters
+
+
 def main(argv=None) -> int:
     args = parse(argv)
     n = args.bits
@@ -83,15 +105,7 @@ def main(argv=None) -> int:
            "missed_states": args.missed_states, "seed": args.seed, "seconds": args.seconds,
            "port_file": str(Path(args.port_file).resolve()) if args.port_file else None,
            "printed": args.printed}
-    taps = sum(1 << (t - 1) for t in Disc(n).taps)
-    parameters = {"N": n, "TAPS": taps, "FILTER": args.filter, "ROM_FILE": rom_file(n),
-                  "CLK_HZ": cfg["clk_hz"], "BAUD": args.baud}
-    if args.fine_bits:
-        parameters["FINE_BITS"] = args.fine_bits
-    if args.cal:
-        parameters["CAL"] = 1
-        if args.cal_file:
-            parameters["CAL_FILE"] = str(Path(args.cal_file).resolve())
+    parameters = board_parameters(args, cfg["clk_hz"])
     run(str(REPO / "tb" / "board" / "prenc_board" / "virtual_board.py"), "prenc_board", "verilator",
         parameters=parameters, extra_env={"PRENC_BOARD_SIM": json.dumps(cfg)})
     return 0

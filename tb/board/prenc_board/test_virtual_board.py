@@ -83,3 +83,16 @@ def test_prenc_host_reads_the_virtual_board():
     text = (SIM_BUILD / "virtual_board.log").read_text()
     assert f"UART on {port}" in text
     assert "x slower than real time" in text, text[-2000:]
+
+
+def test_board_sim_builds_the_board_with_edge_tolerance():
+    # `make board-sim ARGS="--printed --edge-tolerance 31"`: the option reaches prenc_board's
+    # parameter; a value out of range is refused before anything is built.
+    sys.path.insert(0, str(REPO / "scripts"))
+    import board_sim
+
+    args = board_sim.parse(["--printed", "--edge-tolerance", "31"])
+    assert board_sim.board_parameters(args, 30_000_000)["EDGE_TOLERANCE"] == 31
+    assert "EDGE_TOLERANCE" not in board_sim.board_parameters(board_sim.parse([]), 30_000_000)
+    with pytest.raises(SystemExit):
+        board_sim.parse(["--edge-tolerance", "61"])
