@@ -35,7 +35,8 @@
 //   CAL_FILE   with CAL = 1: the table's file ($readmemh, prenc.cal.table's format);
 //              "" : all zero until written
 //   EDGE_TOLERANCE   how far the edges may be off their places (nominal, or the
-//              table's), 1/1000 slot (prenc_velocity's; 0: exact; docs/fine.md)
+//              table's), 1/1000 slot (prenc_velocity's; 0: exact; docs/fine.md); above 0
+//              the fine position's phase is a running mean of the edges' (PHASE_FILTER)
 //
 // Ports: as prenc_velocity's and prenc_fine_position's, and
 //   velocity   quarters per clock x 2^32, signed (the Wishbone register's and the host
@@ -220,7 +221,8 @@ module prenc_fine #(
         .N                (N),
         .FINE_BITS        (FINE_BITS),
         .LOOKAHEAD_HALVES (LOOKAHEAD_HALVES),
-        .CAL              (CAL)
+        .CAL              (CAL),
+        .PHASE_FILTER     ((EDGE_TOLERANCE > 0) ? 1 : 0)
       ) u_fine_position (
         .clk            (clk),
         .rst            (rst),

@@ -8,7 +8,11 @@
 // CAL_FRAC = 12.
 // - travel: the velocity integrated since pos_hyb's last step (it stops once it is 2
 //   quarters or more, past any clamp below). The decoder's step is delayed STEP_DELAY =
-//   3 cycles, so that travel restarts on the cycle pos_hyb shows the step.
+//   3 cycles, so that travel restarts on the cycle pos_hyb shows the step, at 0: the
+//   fraction starts at the crossed edge. With PHASE_FILTER = 1, after a step in the
+//   direction of the last it restarts at 3/4 of the phase against the crossed edge
+//   (edge + travel + velocity - the crossed edge, unclamped; 0 if that is half a
+//   quarter or more): a running mean of the edges' phases, 1/4 of each new edge's.
 // - The fraction: the last step crossed the quarter's lower edge (CW) or its upper
 //   edge (CCW); fraction = clamp(edge + travel) to the quarter, [0, 1), or with CAL = 1
 //   its true span [c_lo, 1 + c_hi). While pos_valid the fine position's quarter is
@@ -32,6 +36,9 @@
 //   FINE_BITS         F, the fraction's bits, 0..8
 //   LOOKAHEAD_HALVES  half clocks of extrapolation, 0..255 (0: off)
 //   CAL               1: the quarter's span from the calibration table; 0: nominal
+//   PHASE_FILTER      1: the phase is a running mean of the edges' (edges that are off
+//                     their places or noisy: prenc_fine's EDGE_TOLERANCE > 0); 0: each
+//                     edge's (default)
 //
 // Ports
 //   pos_hyb, pos_valid   prenc_core's
@@ -50,7 +57,8 @@ module prenc_fine_position #(
   parameter integer N                = 10,
   parameter integer FINE_BITS        = 8,
   parameter integer LOOKAHEAD_HALVES = 0,
-  parameter integer CAL              = 0
+  parameter integer CAL              = 0,
+  parameter integer PHASE_FILTER     = 0
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -85,6 +93,10 @@ module prenc_fine_position #(
       initial $display("ERROR: %m: parameter CAL = %0d must be 0 or 1", CAL);
       prenc_fine_position_parameter_CAL_must_be_0_or_1 u_stop ();
     end
+    if (PHASE_FILTER != 0 && PHASE_FILTER != 1) begin : g_bad_phase_filter
+      initial $display("ERROR: %m: parameter PHASE_FILTER = %0d must be 0 or 1", PHASE_FILTER);
+      prenc_fine_position_parameter_PHASE_FILTER_must_be_0_or_1 u_stop ();
+    end
   endgenerate
 
   // Fixed point and widths.
@@ -96,6 +108,7 @@ module prenc_fine_position #(
   localparam integer TB         = V_FRAC + 3;        // travel, signed: below 4 quarters
   localparam integer XB         = FRAC + 13;         // the fraction with the extrapolation
   localparam integer STEP_DELAY = 3;
+  localparam integer PHASE_SHIFT = 2;                // the phase keeps 1 - 2^-2 of its own
 
   localparam signed [FRAC+4:0] ONE       = 1 << FRAC;
   localparam signed [9:0]      LOOKAHEAD = LOOKAHEAD_HALVES[9:0];
@@ -130,6 +143,19 @@ module prenc_fine_position #(
                                   travel_reg[TB-1:V_FRAC-FRAC]};   // floor, 2^-16
   wire signed [FRAC+4:0] reach = (cw_reg ? lo : hi) + moved;
   wire signed [FRAC+4:0] clamped = (reach < lo) ? lo : (reach >= hi) ? hi - 1'b1 : reach;
+  // PHASE_FILTER: the phase against the crossed edge, edge - crossed (-/+ the quarter's
+  // width, below 2 quarters) in travel's units plus the travel as it would be this clock.
+  wire signed [TB-1:0]  advanced  = travel_reg + {{(TB - 32){velocity[31]}}, velocity};
+  wire signed [FRAC+5:0] gap      = cw_reg ? {lo[FRAC+4], lo} - {hi[FRAC+4], hi}
+                                           : {hi[FRAC+4], hi} - {lo[FRAC+4], lo};
+  wire signed [TB-1:0]  phase     = advanced +
+                                    {gap[TB-V_FRAC+FRAC-1:0], {(V_FRAC - FRAC){1'b0}}};
+  wire                  phase_in  = (phase[TB-1:V_FRAC-1] == {(TB - V_FRAC + 1){1'b0}}) ||
+                                    ((phase[TB-1:V_FRAC-1] == {(TB - V_FRAC + 1){1'b1}}) &&
+                                     (phase[V_FRAC-2:0] != {(V_FRAC - 1){1'b0}}));
+  wire                  keep      = (PHASE_FILTER == 1) && (cw_d_reg[STEP_DELAY-1] == cw_reg) &&
+                                    velocity_valid && phase_in;
+  wire signed [TB-1:0]  kept      = phase - (phase >>> PHASE_SHIFT);
   wire signed [FRAC+5:0] span  = {lo[FRAC+4], lo} + {hi[FRAC+4], hi};
   // Stage B, C.
   wire signed [XB-1:0]  frac_wide = {{(XB - FRAC - 5){frac_a_reg[FRAC+4]}}, frac_a_reg};
@@ -146,7 +172,8 @@ module prenc_fine_position #(
   wire signed [XB-1:0]  v_16      = {{(XB - 32 + V_FRAC - FRAC){velocity[31]}},
                                      velocity[31:V_FRAC-FRAC]};
   wire                  unused_ok = &{1'b0, truncated[XB-1:W], mid_trunc[FRAC+4:W], span[0],
-                                      velocity[V_FRAC-FRAC-1:0], travel_reg[V_FRAC-FRAC-1:0]};
+                                      velocity[V_FRAC-FRAC-1:0], travel_reg[V_FRAC-FRAC-1:0],
+                                      gap[FRAC+5:TB-V_FRAC+FRAC]};
 
   always @(posedge clk) begin
     // Stage C.
@@ -169,9 +196,9 @@ module prenc_fine_position #(
     // The travel since pos_hyb's last step.
     if (step_d_reg[STEP_DELAY-1]) begin
       cw_reg     <= cw_d_reg[STEP_DELAY-1];
-      travel_reg <= {TB{1'b0}};
+      travel_reg <= keep ? kept : {TB{1'b0}};
     end else if (travel_in) begin
-      travel_reg <= travel_reg + {{(TB - 32){velocity[31]}}, velocity};
+      travel_reg <= advanced;
     end
     step_d_reg <= {step_d_reg[STEP_DELAY-2:0], step};
     cw_d_reg   <= {cw_d_reg[STEP_DELAY-2:0], step_cw};

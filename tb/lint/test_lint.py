@@ -85,6 +85,7 @@ BAD_PARAMETERS = [
     ("prenc_board", "DUAL_VOTES", 8),
     ("prenc_velocity", "WINDOW", 16), ("prenc_velocity", "CAL", 2), ("prenc_fine", "WINDOW", 31),
     ("prenc_velocity", "EDGE_TOLERANCE", 61), ("prenc_board", "EDGE_TOLERANCE", -1),
+    ("prenc_fine_position", "PHASE_FILTER", 2),
     ("prenc_board", "EDGE_CAPTURE", 2), ("prenc_health", "WARN_SLOTS", 0), ("prenc_board", "HEALTH", 2), ("prenc_ssi", "WARN_BIT", 2), ("prenc_board", "SSI_WARNING", 2), ("prenc_health", "WARN_BURST", 65),
 ]
 

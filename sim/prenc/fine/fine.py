@@ -32,7 +32,8 @@ class Fine:
             raise ValueError(f"cal = {cal} must be 0 or 1")
         self.cal = cal
         self.velocity = Velocity(window=window, cal=cal, edge_tolerance=edge_tolerance)
-        self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves)
+        self.fine = FinePosition(n=n, fine_bits=fine_bits, lookahead_halves=lookahead_halves,
+                                 phase_filter=int(edge_tolerance > 0))
         self.lookup = CalLookup(n, table) if cal else None
         self._reset_pipeline()
 

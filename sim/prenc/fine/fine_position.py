@@ -8,7 +8,13 @@ which shows it 4 cycles after the decoder); the velocity and its valid flag
 (prenc_velocity: quarters per clock, V_FRAC = 32 fractional bits).
 
 - travel: the velocity integrated since pos_hyb's last step (Q2.32; it stops once it is
-  2 quarters or more, past any clamp below).
+  2 quarters or more, past any clamp below). It starts at 0: the fraction starts at the
+  crossed edge. With PHASE_FILTER (prenc_fine: EDGE_TOLERANCE > 0, edges that are off
+  their places), after a step in the same direction as the last it starts at 3/4 of
+  where the travel said the disc is against the crossed edge (edge + travel + velocity
+  - the crossed edge, unclamped; 0 if that is half a quarter or more): the phase is a
+  running mean of the edges' (1/4 of each new edge), so an edge's own error or noise
+  moves it a quarter as much.
 - The fraction of the quarter: the last step crossed the quarter's lower edge (CW) or
   its upper edge (CCW); fraction = clamp(edge + travel) to the quarter, [0, 1) or, with
   a calibration table, its true span [c_lo, 1 + c_hi). So while pos_valid the fine
@@ -39,14 +45,20 @@ CAL_FRAC = 12      # the table's corrections: 2^-12 quarter
 STEP_DELAY = 3     # decoder step -> the cycle before pos_hyb shows it (prenc_position: 4)
 OUTPUT_DELAY = 3   # pos_hyb -> fine_pos
 TRAVEL_LIMIT = 2 << V_FRAC   # travel stops once it is 2 quarters
+PHASE_SHIFT = 2              # PHASE_FILTER: the phase keeps 1 - 2^-2 of its difference
+PHASE_LIMIT = 1 << (V_FRAC - 1)   # ... while that is below half a quarter
 
 
 class FinePosition:
-    def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0):
+    def __init__(self, n: int = 10, fine_bits: int = 8, lookahead_halves: int = 0,
+                 phase_filter: int = 0):
         if not 0 <= fine_bits <= 8:
             raise ValueError(f"fine_bits = {fine_bits} is out of range 0..8")
         if not 0 <= lookahead_halves <= 255:
             raise ValueError(f"lookahead_halves = {lookahead_halves} is out of range 0..255")
+        if phase_filter not in (0, 1):
+            raise ValueError(f"phase_filter = {phase_filter} must be 0 or 1")
+        self.phase_filter = phase_filter
         self.n = n
         self.fine_bits = fine_bits
         self.lookahead_halves = lookahead_halves
@@ -65,6 +77,7 @@ class FinePosition:
         self.fine_pos = 0
         self.valid = 0
         self.interpolated = 0
+        self.kept = 0                         # steps whose phase was kept (PHASE_FILTER)
 
     def clock(self, pos_hyb: int, pos_valid: int, step: int, step_cw: int, velocity: int,
               velocity_valid: int, rst: int = 0, c_lo: int = 0, c_hi: int = 0) -> None:
@@ -91,8 +104,13 @@ class FinePosition:
         self.a = (frac, pos_hyb, pos_valid, velocity_valid, (lo + hi) >> 1)
         self.ext = (velocity >> (V_FRAC - FRAC)) * self.lookahead_halves
         if self.step_d[-1]:
+            # The phase against the crossed edge (the travel as it would be this clock).
+            e = ((edge - (hi if self.cw else lo)) << (V_FRAC - FRAC)) + self.travel + velocity
+            keep = (self.phase_filter and self.cw_d[-1] == self.cw and velocity_valid
+                    and abs(e) < PHASE_LIMIT)
+            self.travel = e - (e >> PHASE_SHIFT) if keep else 0
+            self.kept += int(keep)
             self.cw = self.cw_d[-1]
-            self.travel = 0
         elif abs(self.travel) < TRAVEL_LIMIT:   # (the test on the register: no long path)
             self.travel += velocity
         self.step_d = [step] + self.step_d[:-1]

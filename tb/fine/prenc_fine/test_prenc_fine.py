@@ -106,11 +106,11 @@ def expected(model: Fine) -> dict[str, int]:
 @cocotb.test()
 async def matches_the_models_clock_by_clock(dut):
     seed = int(os.environ.get("PRENC_FINE_SEED", rng().randrange(1 << 30)))  # replay a draw
-    cal = int(dut.CAL.value)
+    cal, edge_tolerance = int(dut.CAL.value), int(dut.EDGE_TOLERANCE.value)
     inputs, total = stimulus(seed, cal)
     table = read(os.environ["PRENC_CAL_FILE"], n=N).c if cal else None
     model = Fine(n=N, fine_bits=FINE_BITS, lookahead_halves=LOOKAHEAD_HALVES, window=WINDOW,
-                 cal=cal, table=table)
+                 cal=cal, table=table, edge_tolerance=edge_tolerance)
     names = ("pos_hyb", "pos_valid", "step", "step_cw", "illegal", "cal_write", "cal_address",
              "cal_data")
     await start_clock_and_reset(dut, RESET_CLOCKS, {k: 0 for k in names})
@@ -127,18 +127,20 @@ async def matches_the_models_clock_by_clock(dut):
         interpolated += model.interpolated
         outside += int(model.interpolated and (model.fine_pos >> FINE_BITS) != model.fine.b[1])
         await clock_and_check(dut, now, expected(model), lambda: f"seed {seed}, clock {c}")
-    dut._log.info("seed %d, CAL %d: %d clocks, %d stops, %d interpolated (%d outside the quarter: "
-                  "the extrapolation), %d with both words of the table", seed, cal, total, stops,
-                  interpolated, outside, looked_up)
+    dut._log.info("seed %d, CAL %d, EDGE_TOLERANCE %d: %d clocks, %d stops, %d interpolated (%d "
+                  "outside the quarter: the extrapolation), %d with both words of the table, %d "
+                  "steps that kept their phase", seed, cal, edge_tolerance, total, stops,
+                  interpolated, outside, looked_up, model.fine.kept)
     assert stops >= 2 and interpolated > total // 2 and outside > 0
     assert not cal or looked_up > 0.9 * total
+    assert (model.fine.kept > 100) == bool(edge_tolerance)
 
 
-@pytest.mark.parametrize("cal", [0, 1])
+@pytest.mark.parametrize("cal, edge_tolerance", [(0, 0), (1, 0), (1, 5)])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_fine(simulator, cal):
+def test_prenc_fine(simulator, cal, edge_tolerance):
     parameters = {"N": N, "FINE_BITS": FINE_BITS, "LOOKAHEAD_HALVES": LOOKAHEAD_HALVES,
-                  "WINDOW": WINDOW, "CAL": cal}
+                  "WINDOW": WINDOW, "CAL": cal, "EDGE_TOLERANCE": edge_tolerance}
     env = {}
     if cal:
         parameters["CAL_FILE"] = env["PRENC_CAL_FILE"] = cal_file()
