@@ -9,7 +9,8 @@ prenc.virtual.fine_bench.PRINTED), N = 10 at 30 MHz, through a motion of five ch
 a start, one whole turn at 600 rpm, a ramp to 6,000 rpm in 4 ms and back, a reversal
 and a stop. The core is taken as locked (its own story is the first part).
 
-Twice: without a table (CAL = 0), then with the table that `prenc calibrate` computes
+Twice: without a table (CAL = 0, EDGE_TOLERANCE = 31: what a printed disc without its
+table is built with, docs/fine.md), then with the table that `prenc calibrate` computes
 (prenc.cal.calibrate, the same code) from the crossings of a 10-turn run at 70 rpm, as
 the board's edge capture records them (prenc.virtual.edge_timing.steady_record: no
 board is simulated here; tb/board/prenc_board/test_calibrate_virtual_board.py runs the
@@ -86,8 +87,8 @@ def run() -> Result:
     # The output after clock c is read against theta[c + 1], as the bench does.
     truth = theta[1:]
     out_err, out_rpm = {}, {}
-    for name, t in (("uncalibrated", None), ("calibrated", table.table.c)):
-        r = fb.run_fine(sync, table=t)
+    for name, t, tol in (("uncalibrated", None, fb.PRINTED_EDGE_TOLERANCE), ("calibrated", table.table.c, 0)):
+        r = fb.run_fine(sync, table=t, edge_tolerance=tol)
         fine = r["fine"][:-1] / scale - (4 * zero if t is not None else 0.0)
         # Until the fine position is valid (its pipeline's first clocks) it is not read: NaN.
         out_err[name] = np.where(r["fine_valid"][:-1] == 1, fb.position_error(fine, truth), np.nan)
@@ -126,8 +127,8 @@ def tell(out_dir: str | Path) -> Result:
     print(f"\nprenc demo, part 2: the fine position and the velocity (the models of rtl/fine/, N = {fb.N}, "
           f"{fb.CLK_HZ / 1e6:.0f} MHz, FINE_BITS = {fb.FINE_BITS})")
     print("  on a printed disc (edges +-0.05 slot, B 10 degrees late, duty 45/55 %, eccentricity 0.2 slot),")
-    print(f"  before and after calibration: prenc calibrate's computation on a 10-turn run at 70 rpm, the table "
-          f"{r.table_rms:.5f} slot RMS from the disc's true edges")
+    print(f"  before calibration (EDGE_TOLERANCE = {fb.PRINTED_EDGE_TOLERANCE}) and after: prenc calibrate's "
+          f"computation on a 10-turn run at 70 rpm, the table {r.table_rms:.5f} slot RMS from the disc's true edges")
     for line in figures(r):
         print(line)
     path = out / "instrument.png"
@@ -168,16 +169,18 @@ def plot(r: Result, path: Path) -> None:
         bins = 1500
         mid, lo, hi = _envelope(x, r.rpm_true[idx], bins)
         ax_v.plot(mid, (lo + hi) / 2, color="0.3", lw=2.5, label="true speed")
+        names = {"uncalibrated": f"no table (EDGE_TOLERANCE = {fb.PRINTED_EDGE_TOLERANCE})",
+                 "calibrated": "with the table"}
         for name in ("uncalibrated", "calibrated"):
             mid, lo, hi = _envelope(x, r.rpm[name][idx], bins)
             ax_v.fill_between(mid, lo, hi, color=colours[name], alpha=0.6, lw=0.6,
-                              label=f"velocity, {'no table' if name == 'uncalibrated' else 'with the table'}")
+                              label=f"velocity, {names[name]}")
         # The errors: the largest |error| in each of the bins, on log axes (the table's
         # thousandths and the raw disc's tenths in one picture).
         mid, _, worst = _envelope(x, np.abs(r.quarter_err[idx]), bins)
         ax_p.plot(mid, worst, color=colours["quarter"], lw=1, label="the quarter alone")
         for name in ("uncalibrated", "calibrated"):
-            which = "no table" if name == "uncalibrated" else "with the table"
+            which = names[name]
             mid, _, worst = _envelope(x, np.abs(r.err[name][idx]), bins)
             ax_p.plot(mid, worst, color=colours[name], lw=1, label=f"fine position, {which}")
             mid, _, worst = _envelope(x, np.abs(r.rpm[name][idx] - r.rpm_true[idx]), bins)
