@@ -546,7 +546,7 @@ def sensors_section() -> None:
     calibrated_jitter_rows()
 
 
-NOISY_EDGE_TOLERANCE = 5   # the sensors' crossing noise of 0.005 slot RMS, beyond the table
+NOISY_EDGE_TOLERANCE = 10  # the sensors' crossing noise of 0.005 slot RMS (twice it), beyond the table
 
 
 def calibrated_jitter_rows() -> None:
@@ -582,6 +582,25 @@ def calibrated_jitter_rows() -> None:
           f"{'met' if worst_t <= 0.0025 else 'MISSED'}; without it {worst:.4f} (each edge's phase)")
     print(f"   Goal (issue 60): velocity within 0.05 % at 600 and 6,000 rpm with it, EDGE_TOLERANCE = {tol}: "
           f"worst {worst_v:.3f} % max: {'met' if worst_v <= 0.05 else 'MISSED'}")
+    # Why twice the noise: the test's bound at 600 rpm, one cycle a window, is about 2.9
+    # window errors at EDGE_TOLERANCE = 5; a window beyond it starts a fit on noise.
+    print("   600 rpm held 14 ms, the velocity over the last 12 (% RMS / max), EDGE_TOLERANCE against that noise:")
+    traj = fb._traj().constant(fb.rpm(600), 2e-3)
+    start = len(traj.theta)
+    theta = traj.constant(fb.rpm(600), 12e-3).theta
+    held = fb.Case("600 rpm held", theta, np.arange(start, len(theta) - 1))
+    cells = []
+    for edge_tolerance in (5, 10, 20):
+        r = cb.evaluate(held, table, zero, sensors=(CrossingJitter(sigma=0.005, seed=1),),
+                        edge_tolerance=edge_tolerance)["calibrated"]
+        cells.append(f"{edge_tolerance}: {r.velocity[0]:.3f} / {r.velocity[1]:.3f}")
+    print("   " + ", ".join(cells))
+    cells = []
+    for name in ("ramp 600 -> 6000 rpm in 4 ms", "stop from 600 rpm in 1 ms"):
+        case = next(c for c in fb.cases() if c.name == name)
+        r = cb.evaluate(case, table, zero, edge_tolerance=tol)["calibrated"]
+        cells.append(f"{name.split()[0]} {r.fine[0]:.4f} slot and {r.velocity[0]:.2f} % RMS")
+    print(f"   Its cost, without jitter (EDGE_TOLERANCE = {tol}, the table): " + ", ".join(cells))
 
 
 def health_section() -> bool:

@@ -210,9 +210,9 @@ def test_a_printed_disc_without_its_table_reads_its_speed_with_edge_tolerance(rp
 
 def test_a_noisy_sensor_reads_its_speed_with_edge_tolerance_and_a_table():
     # Crossing jitter of 0.005 slot RMS on A and B, the printed disc with its table: at
-    # 6,000 rpm EDGE_TOLERANCE = 5 keeps the velocity within 0.1 % at every clock (the
-    # bench: 0.032 %), at least 4 times closer than without it, and the fine position
-    # within 0.0025 slot RMS.
+    # 6,000 rpm EDGE_TOLERANCE = 10 (twice the noise) keeps the velocity within 0.1 % at
+    # every clock (the bench: 0.032 %), at least 4 times closer than without it, and the
+    # fine position within 0.0025 slot RMS.
     from prenc.virtual.sensors import CrossingJitter
 
     theta = steady(6000, slots=max(48.0, 60 * fb.rpm(6000) * fb.WINDOW / fb.CLK_HZ))
@@ -221,15 +221,15 @@ def test_a_noisy_sensor_reads_its_speed_with_edge_tolerance_and_a_table():
     truth = 4 * fb.rpm(6000) / fb.CLK_HZ
     zero = -true_corrections(fb.PRINTED, fb.N).mean() / 4
     worst, rms = {}, {}
-    for tol in (0, 5):
+    for tol in (0, 10):
         out = fb.run_fine(sync, table=calibrated_table(), edge_tolerance=tol)
         worst[tol] = np.max(np.abs(out["velocity"][c] - truth)) / truth
         err = fb.position_error(out["fine"][c] / (1 << fb.FINE_BITS), theta[c + 1]) - zero
         rms[tol] = float(np.sqrt(np.mean(err ** 2)))
-    assert worst[5] <= 0.001 and worst[0] >= 4 * worst[5], worst
+    assert worst[10] <= 0.001 and worst[0] >= 4 * worst[10], worst
     # The fine position: its phase a running mean of the edges', within issue 60's 0.0025
     # slot RMS; each edge's phase carries its noise.
-    assert rms[5] <= 0.0025 < rms[0], rms
+    assert rms[10] <= 0.0025 < rms[0], rms
 
 
 def test_a_stop_on_a_printed_disc_reads_zero_with_edge_tolerance():
