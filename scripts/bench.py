@@ -580,21 +580,41 @@ def calibrated_jitter_rows() -> None:
     print(f"   Goal (issue 60): <= 0.0025 slot RMS with 0.005 slot of jitter at 600 and 6,000 rpm: with "
           f"EDGE_TOLERANCE = {tol} (the phase a running mean of the edges') worst {worst_t:.4f}: "
           f"{'met' if worst_t <= 0.0025 else 'MISSED'}; without it {worst:.4f} (each edge's phase)")
-    print(f"   Goal (issue 60): velocity within 0.05 % at 600 and 6,000 rpm with it, EDGE_TOLERANCE = {tol}: "
-          f"worst {worst_v:.3f} % max: {'met' if worst_v <= 0.05 else 'MISSED'}")
+    jitter = (CrossingJitter(sigma=0.005, seed=1),)
+
+    def held(rpm_value: float, before: float, measured: float) -> object:
+        """`rpm_value` held `before` + `measured` seconds, judged over the last `measured`."""
+        traj = fb._traj().constant(fb.rpm(rpm_value), before)
+        start = len(traj.theta)
+        theta = traj.constant(fb.rpm(rpm_value), measured).theta
+        return fb.Case(f"{rpm_value} rpm held", theta, np.arange(start, len(theta) - 1))
+
+    # The steady speed: after 16 windows without a trend the running mean weighs 1/32
+    # (prenc.fine.program), so a speed held 8 ms is judged over the next 6 ms.
+    cells, worst_held = [], 0.0
+    for rpm_value in (600, 6000):
+        r = cb.evaluate(held(rpm_value, 8e-3, 6e-3), table, zero, sensors=jitter, edge_tolerance=tol)["calibrated"]
+        cells.append(f"{rpm_value} rpm {r.velocity[0]:.4f} / {r.velocity[1]:.3f}")
+        worst_held = max(worst_held, r.velocity[1])
+    print(f"   Held 8 ms, then over 6 ms (% RMS / max): " + ", ".join(cells))
+    print(f"   Goal (issue 60): velocity within 0.05 % at steady 600 and 6,000 rpm with it, EDGE_TOLERANCE = {tol}: "
+          f"worst {worst_held:.3f} % max: {'met' if worst_held <= 0.05 else 'MISSED'} (in the rows above, "
+          f"{worst_v:.3f} % at worst from 1.6 ms after the start)")
     # Why twice the noise: the test's bound at 600 rpm, one cycle a window, is about 2.9
     # window errors at EDGE_TOLERANCE = 5; a window beyond it starts a fit on noise.
     print("   600 rpm held 14 ms, the velocity over the last 12 (% RMS / max), EDGE_TOLERANCE against that noise:")
-    traj = fb._traj().constant(fb.rpm(600), 2e-3)
-    start = len(traj.theta)
-    theta = traj.constant(fb.rpm(600), 12e-3).theta
-    held = fb.Case("600 rpm held", theta, np.arange(start, len(theta) - 1))
     cells = []
     for edge_tolerance in (5, 10, 20):
-        r = cb.evaluate(held, table, zero, sensors=(CrossingJitter(sigma=0.005, seed=1),),
+        r = cb.evaluate(held(600, 2e-3, 12e-3), table, zero, sensors=jitter,
                         edge_tolerance=edge_tolerance)["calibrated"]
         cells.append(f"{edge_tolerance}: {r.velocity[0]:.3f} / {r.velocity[1]:.3f}")
     print("   " + ", ".join(cells))
+    cells = []
+    for name in ("600 rpm, +-2 % ripple at 100 Hz", "6000 rpm, +-2 % ripple at 100 Hz"):
+        case = next(c for c in fb.cases() if c.name == name)
+        r = cb.evaluate(case, table, zero, sensors=jitter, edge_tolerance=tol)["calibrated"]
+        cells.append(f"{name.split(',')[0]} {r.fine[0]:.4f} slot and {r.velocity[0]:.2f} % RMS")
+    print(f"   A ripple of +-2 % at 100 Hz with that jitter (the trend keeps the weight at 1/8): " + ", ".join(cells))
     cells = []
     for name in ("ramp 600 -> 6000 rpm in 4 ms", "stop from 600 rpm in 1 ms"):
         case = next(c for c in fb.cases() if c.name == name)

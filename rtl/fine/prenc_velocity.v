@@ -110,6 +110,11 @@ module prenc_velocity #(
   localparam [31:0] C_OLD      = 32'd1 << 30;
   localparam [31:0] C_ONE      = 32'd1;
   localparam [31:0] C_TWO      = 32'd2;
+  // The running mean's weight falls to 1/32 after C_SETTLED windows passed without a
+  // trend, more than C_TREND in a row on one side of the speed: with a table and
+  // EDGE_TOLERANCE (the sensors' noise); else C_TREND = 0, every window a trend.
+  localparam [31:0] C_SETTLED  = 32'd16;
+  localparam [31:0] C_TREND    = (CAL == 1 && CYCLES == 1) ? 32'd6 : 32'd0;
 
   // Opcodes (prenc.fine.engine.OPS), specials, out kinds, conditions.
   localparam [3:0] OP_LOAD = 4'd1, OP_ADD = 4'd2, OP_SUB = 4'd3, OP_HALF = 4'd4,
@@ -162,6 +167,8 @@ module prenc_velocity #(
     rf[8] = C_ONE;
     rf[9] = C_TWO;
     rf[10] = C_CYCLE;
+    rf[11] = C_SETTLED;
+    rf[12] = C_TREND;
   end
 
   // The instruction's fields.

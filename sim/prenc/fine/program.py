@@ -19,7 +19,10 @@ The estimator, in the engine's words (docs/fine.md):
   window's mean is off by less than (S + 2 DELTA) / P1 (a clock's quantization at
   each end, DELTA at each edge); twice that leaves room for the speed's own error.
   - Passed: S <- S + (V1 - S) / 2^RUN_SHIFT, acceleration 0: the speed is a running
-    mean of the windows, so a steady speed reads the mean of many.
+    mean of the windows, so a steady speed reads the mean of many. With a table and
+    EDGE_TOLERANCE (the edges' error is then the sensors' noise, new at every pass) the
+    weight is 1/2^RUN_SHIFT_SETTLED once SETTLED windows in a row have passed without a
+    trend (more than TREND in a row on one side of S: a ripple, a slow ramp).
   - Failed, but the last two windows agree with each other within the same bound: the
     speed is constant again (an acceleration ended, or the last fit was off): S <- (V1 +
     V2) / 2, acceleration 0.
@@ -63,14 +66,17 @@ V_FRAC = 32            # speeds: 2^-32 quarter per clock
 A_FRAC = 32            # the acceleration: 2^-32 quarter per clock^2
 LATENCY = 256          # a fitted speed shows LATENCY clocks after its closing step
 RUN_SHIFT = 3          # the running mean's weight: 1/8
+RUN_SHIFT_SETTLED = 5  # ... after SETTLED windows passed without a trend: 1/32
+SETTLED = 16
+TREND = 6              # with a table and EDGE_TOLERANCE: more in a row on one side of S
 LEVEL_0 = (5 << CAL_FRAC) // 4     # an overdue edge: the quarter's width and a quarter
 DELTA = {0: 0, 1: 1 << (V_FRAC - 10)}   # an edge's residual error with a table: 2^-10 quarter
 OLD = 1 << 30          # an anchor older than this (clocks) is dropped
 
 # The register file: the constants first (initial values), then the variables.
 RF = ("C_ZERO", "C_WINDOW", "C_SHORT", "C_QUARTERS", "C_LEVEL0", "C_2DELTA", "C_LATENCY",
-      "C_OLD", "C_ONE", "C_TWO", "C_CYCLE", "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "T2",
-      "STOP_AT")
+      "C_OLD", "C_ONE", "C_TWO", "C_CYCLE", "C_SETTLED", "C_TREND", "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "T2",
+      "STOP_AT", "RUNS", "UP_LEFT", "DOWN_LEFT")
 QUARTERS = (3 << CAL_FRAC) // 2        # below 1.5 quarters: a window of one quarter
 CYCLE = (7 << CAL_FRAC) // 2           # EDGE_TOLERANCE > 0: below 3.5 quarters, no window;
                                        # then below 4.5 (C_QUARTERS 1), a whole cycle
@@ -97,7 +103,8 @@ def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
     values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2,
               "C_QUARTERS": (1 << CAL_FRAC) if cycles else QUARTERS, "C_LEVEL0": LEVEL_0 + 2 * edge,
               "C_2DELTA": 2 * DELTA[cal] + (2 * edge << (V_FRAC - CAL_FRAC)), "C_LATENCY": LATENCY,
-              "C_OLD": OLD, "C_ONE": 1, "C_TWO": 2, "C_CYCLE": CYCLE if cycles else 0}
+              "C_OLD": OLD, "C_ONE": 1, "C_TWO": 2, "C_CYCLE": CYCLE if cycles else 0,
+              "C_SETTLED": SETTLED, "C_TREND": TREND if (cal and cycles) else 0}
     return {RF.index(name): value for name, value in values.items()}
 
 
@@ -138,10 +145,7 @@ WRITTEN = [
     (None, "JMP", "ALWAYS", "IDLE"),
     ("STOP", "LOAD", "C_ZERO"),
     (None, "OUT", "SPEED_A0"),
-    (None, "FLAG", "ANCH", 0),
-    (None, "FLAG", "HAVE", 0),
-    (None, "FLAG", "BND", 0),
-    (None, "JMP", "ALWAYS", "IDLE"),
+    (None, "JMP", "ALWAYS", "RESTART"),
     # A step (held until DONE): the quarter's LEVEL, then a window's close or its anchor.
     ("STEP", "FLAG", "BND", 0),
     (None, "JMP", "NOT_ANCH", "ANCHOR"),
@@ -194,15 +198,53 @@ WRITTEN = [
     (None, "LOAD", "V1"),
     (None, "SUB", "s.SPEED"),
     (None, "HALF", 1),
+    (None, "STORE", "T1"),                 # (V1 - S) / 2, for the running mean
     (None, "JMP", "NEG", "BELOW"),
     (None, "SUB", "T0"),
-    (None, "JMP", "NEG", "CONSTANT"),
-    (None, "JMP", "ALWAYS", "AGREE"),
+    (None, "JMP", "NOT_NEG", "AGREE"),
+    # Passed. UP_LEFT, DOWN_LEFT: how many more windows in a row above (below) S are not
+    # yet a trend; a window on the other side sets them to C_TREND. A trend (a ripple, a
+    # slow ramp: more than C_TREND in a row) restarts RUNS, the windows passed without
+    # one still to go (from C_SETTLED) before the running mean's weight is
+    # 1/2^RUN_SHIFT_SETTLED instead of 1/2^RUN_SHIFT. C_TREND is 0 without a table and
+    # EDGE_TOLERANCE: every window is a trend, the weight always 1/2^RUN_SHIFT.
+    (None, "LOAD", "C_TREND"),             # above S
+    (None, "STORE", "DOWN_LEFT"),
+    (None, "LOAD", "UP_LEFT"),
+    (None, "SUB", "C_ONE"),
+    (None, "JMP", "NEG", "TREND"),
+    (None, "STORE", "UP_LEFT"),
+    (None, "JMP", "ALWAYS", "COUNT"),
     ("BELOW", "ADD", "T0"),
-    (None, "JMP", "NOT_NEG", "CONSTANT"),
+    (None, "JMP", "NEG", "AGREE"),
+    (None, "LOAD", "C_TREND"),             # below S
+    (None, "STORE", "UP_LEFT"),
+    (None, "LOAD", "DOWN_LEFT"),
+    (None, "SUB", "C_ONE"),
+    (None, "JMP", "NEG", "TREND"),
+    (None, "STORE", "DOWN_LEFT"),
+    ("COUNT", "LOAD", "RUNS"),
+    (None, "SUB", "C_ONE"),
+    (None, "JMP", "NEG", "SETTLED"),       # (RUNS stays 0)
+    ("COUNTED", "STORE", "RUNS"),
+    (None, "LOAD", "T1"),                  # S + (V1 - S) / 2^RUN_SHIFT
+    (None, "HALF", RUN_SHIFT - 1),
+    (None, "JMP", "ALWAYS", "MEAN"),
+    ("TREND", "LOAD", "C_SETTLED"),
+    (None, "JMP", "ALWAYS", "COUNTED"),
+    ("SETTLED", "LOAD", "T1"),             # S + (V1 - S) / 2^RUN_SHIFT_SETTLED
+    (None, "HALF", RUN_SHIFT_SETTLED - 1),
+    ("MEAN", "ADD", "s.SPEED"),
+    (None, "OUT", "SPEED_A0"),
+    ("STEADY", "LOAD", "C_ZERO"),          # no run of changes
+    (None, "STORE", "UPS"),
+    (None, "STORE", "DOWNS"),
+    (None, "JMP", "ALWAYS", "NEXT"),
     # Failed: do the last two windows agree with each other (|V1 - V2| / 2 < T0)? Then
     # the speed is constant again: S <- (V1 + V2) / 2, acceleration 0. Else the fit.
-    ("AGREE", "LOAD", "V1"),
+    ("AGREE", "LOAD", "C_SETTLED"),        # RUNS restarts
+    (None, "STORE", "RUNS"),
+    (None, "LOAD", "V1"),
     (None, "SUB", "V2"),
     (None, "HALF", 1),
     (None, "JMP", "NEG", "BELOW_V2"),
@@ -216,15 +258,6 @@ WRITTEN = [
     (None, "HALF", 1),
     (None, "OUT", "SPEED_A0"),
     (None, "JMP", "ALWAYS", "STEADY"),
-    ("CONSTANT", "LOAD", "V1"),            # S + (V1 - S) / 2^RUN_SHIFT
-    (None, "SUB", "s.SPEED"),
-    (None, "HALF", RUN_SHIFT),
-    (None, "ADD", "s.SPEED"),
-    (None, "OUT", "SPEED_A0"),
-    ("STEADY", "LOAD", "C_ZERO"),          # no run of changes
-    (None, "STORE", "UPS"),
-    (None, "STORE", "DOWNS"),
-    (None, "JMP", "ALWAYS", "NEXT"),
     # V1 changed from V2 (UPS, DOWNS: the windows before that changed the same way, up
     # to 2). The first change: S <- V1, acceleration 0. The second: the fit's speed, but
     # acceleration 0 (HOLD < 0). The third and on: the fit. (A step of speed changes
@@ -299,7 +332,9 @@ WRITTEN = [
     ("ZERO", "LOAD", "C_ZERO"),
     (None, "OUT", "SPEED_A0"),
     (None, "JMP", "ALWAYS", "NEXT"),
-    ("FIRST", "LOAD", "C_ZERO"),
+    ("FIRST", "LOAD", "C_SETTLED"),
+    (None, "STORE", "RUNS"),
+    (None, "LOAD", "C_ZERO"),
     (None, "STORE", "UPS"),
     (None, "STORE", "DOWNS"),
     (None, "FLAG", "HAVE", 1),

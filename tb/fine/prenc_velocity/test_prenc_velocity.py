@@ -42,6 +42,13 @@ NEVER = (OLD_ANCHOR, OLD_ANCHOR + 1)
 # The test for whole cycles, which only EDGE_TOLERANCE > 0 runs.
 _FIRST = next(k for k, row in enumerate(SOURCE) if row[1:] == ("JMP", "NOT_NEG", "CLOSE")) + 1
 WHOLE_CYCLES = tuple(range(_FIRST, next(k for k, row in enumerate(SOURCE) if row[0] == "CLOSE")))
+# The running mean's settled weight and its trend counts, which only CAL = 1 with
+# EDGE_TOLERANCE > 0 runs (C_TREND > 0).
+_LABEL = {row[0]: k for k, row in enumerate(SOURCE) if row[0]}
+SETTLING = tuple(sorted(
+    [k for k, row in enumerate(SOURCE)
+     if row[1:] in (("STORE", "UP_LEFT"), ("STORE", "DOWN_LEFT"), ("JMP", "ALWAYS", "COUNT"))]
+    + list(range(_LABEL["COUNT"], _LABEL["COUNTED"])) + list(range(_LABEL["SETTLED"], _LABEL["MEAN"]))))
 
 
 def stimulus(seed: int, cal: int, printed: bool) -> dict[str, np.ndarray]:
@@ -111,9 +118,9 @@ async def matches_the_model_clock_by_clock(dut):
         expected = {"velocity": model.velocity & 0xFFFF_FFFF, "valid": model.valid}
         await clock_and_check(dut, now, expected, lambda: f"seed {seed}, clock {c}")
     if edge_tolerance:   # the rest of the program: the runs without EDGE_TOLERANCE
-        missing = [k for k in WHOLE_CYCLES if ran[k] == 0]
+        missing = [k for k in WHOLE_CYCLES + (SETTLING if cal else ()) if ran[k] == 0]
     else:
-        missing = [k for k, n in enumerate(ran) if n == 0 and k not in NEVER + WHOLE_CYCLES]
+        missing = [k for k, n in enumerate(ran) if n == 0 and k not in NEVER + WHOLE_CYCLES + SETTLING]
     dut._log.info("seed %d, CAL %d, EDGE_TOLERANCE %d: %d clocks; instructions never run: %s",
                   seed, cal, edge_tolerance, total,
                   [(k, SOURCE[k]) for k in missing])
