@@ -75,7 +75,8 @@ OLD = 1 << 30          # an anchor older than this (clocks) is dropped
 
 # The register file: the constants first (initial values), then the variables.
 RF = ("C_ZERO", "C_WINDOW", "C_SHORT", "C_QUARTERS", "C_LEVEL0", "C_2DELTA", "C_LATENCY",
-      "C_OLD", "C_ONE", "C_TWO", "C_CYCLE", "C_SETTLED", "C_TREND", "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "T2",
+      "C_OLD", "C_ONE", "C_TWO", "C_CYCLE", "C_SETTLED", "C_TREND",
+      "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "T2",
       "STOP_AT", "RUNS", "UP_LEFT", "DOWN_LEFT")
 QUARTERS = (3 << CAL_FRAC) // 2        # below 1.5 quarters: a window of one quarter
 CYCLE = (7 << CAL_FRAC) // 2           # EDGE_TOLERANCE > 0: below 3.5 quarters, no window;
@@ -95,7 +96,9 @@ def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
     may be off the places the velocity takes them at (the nominal ones; with a table,
     the table's: then the sensors' noise). The windows are whole cycles (C_CYCLE), the
     test allows that much more error at each edge (C_2DELTA), and an overdue edge waits
-    for a quarter that much wider (C_LEVEL0)."""
+    for a quarter that much wider (C_LEVEL0). With a table too, the running mean weighs
+    1/2^RUN_SHIFT_SETTLED after C_SETTLED windows without a trend of C_TREND; else
+    C_TREND is 0 and every window is a trend."""
     if not 0 <= edge_tolerance <= EDGE_TOLERANCE_MAX:
         raise ValueError(f"edge_tolerance = {edge_tolerance} is out of range 0..{EDGE_TOLERANCE_MAX}")
     edge = edge_delta(edge_tolerance)
