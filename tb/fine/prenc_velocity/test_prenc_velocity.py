@@ -4,7 +4,9 @@ model prenc.fine.velocity.Velocity, clock by clock.
 
 The stimulus is what the quadrature decoder gives the block on a disc that starts at
 rest, accelerates, turns, reverses smoothly and at once, wanders, stops, crawls and
-starts again; a few illegal transitions are mixed in. With CAL = 1 the disc is a
+starts again; a few illegal transitions are mixed in, outside the crawl, which is held
+long enough for the running mean to settle (every draw runs the settled weight: 200
+draws of the model checked). With CAL = 1 the disc is a
 printed one and the corrections of each quarter's edges come with its steps, as
 prenc_fine gives them from the calibration table; with EDGE_TOLERANCE and CAL = 0 the
 disc is the same printed one, without its table. A small WINDOW makes the windows
@@ -76,15 +78,16 @@ def stimulus(seed: int, cal: int, printed: bool) -> dict[str, np.ndarray]:
             .accelerate(0.0, 1500)             # a stop
             .rest(3000)
             .constant(0.01, 1500)              # an abrupt stop: overdue, bounded, stopped
-            .rest(2000)
-            .constant(-0.004, 6000)            # a crawl
-            .rest(600)                         # stopped at once
-            .constant(-0.004, 1000)
+            .rest(2000))
+    crawl = (len(traj), len(traj.constant(-0.004, 8000)))   # a crawl held long enough
+    traj = (traj.rest(600)                     # to settle (no illegal transition in it);
+            .constant(-0.004, 1000)            # stopped at once
             .accelerate(-0.03, 3000))
     sync = sync_stream(traj.theta, PRINTED if printed else None, n=N)
     total = len(traj.theta)
     illegal = np.zeros(total, dtype=np.int8)
-    for c in r.choice(np.arange(5000, total - 10), size=4, replace=False):
+    clocks = np.concatenate([np.arange(5000, crawl[0]), np.arange(crawl[1], total - 10)])
+    for c in r.choice(clocks, size=4, replace=False):
         illegal[c] = 1
     step = np.where(illegal == 1, 0, sync.step)
     # The decoder's quarter after each step: pos_hyb, POSITION_DELAY clocks later.
