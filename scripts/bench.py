@@ -1080,14 +1080,18 @@ def missed_states_over_seeds(n: int, seeds: range = range(1, 21)) -> None:
     own bound: no reader that needs N + 1 distinct slots of each head before it locks
     can be valid before the walk has spanned N + 1 slots. And the same draws with the
     missed states drawn over the whole run (the table's fall after 10,000 clocks, outside
-    the first acquisition), so that some fall while the reader acquires."""
+    the first acquisition), so that some fall while the reader acquires; and those draws
+    again without the missed states that fall while the core holds no position (neither
+    valid nor two hypotheses): what any reader that kept its evidence across them could
+    gain at most (issue 60 item 3 asks for such a lock)."""
     from prenc.virtual.encoder import Disc, VirtualEncoder
     from prenc.virtual.faults import MissedQuadratureState
     from prenc.virtual.goals import goals, measure
     from prenc.virtual.plain_reader import PlainReader
     from prenc.core.reader import Reader
 
-    core, plain, bound, anywhere = [], [], [], []
+    core, plain, bound, anywhere, holding = [], [], [], [], []
+    acquiring = drawn = 0
     for seed in seeds:
         g = next(x for x in goals(n, seed=seed) if x.name == "missed_states")
         enc = g.run(n)
@@ -1099,8 +1103,15 @@ def missed_states_over_seeds(n: int, seeds: range = range(1, 21)) -> None:
         bound.append(1 - int(np.argmax(read >= n + 1)) / len(theta))
         slot = np.floor(theta).astype(np.int64)
         count = max(1, round(g.missed_share * int(np.count_nonzero(np.diff(slot) != 0))))
-        spread = VirtualEncoder(Disc(n), [MissedQuadratureState(count=count, seed=seed + 100)]).run(g.trajectory)
+        missed = MissedQuadratureState(count=count, seed=seed + 100)
+        spread = VirtualEncoder(Disc(n), [missed]).run(g.trajectory)
         anywhere.append(measure(g, Reader(Code(n), 0), n, 0, spread).availability)
+        held = [o.valid or o.dual for o in Reader(Code(n), 0).run(spread)]
+        firsts = [c1 for _, c1, _ in missed.chosen(VirtualEncoder(Disc(n)).run(g.trajectory))]
+        skip = frozenset(c for c in firsts if not held[c])
+        acquiring, drawn = acquiring + len(skip), drawn + len(firsts)
+        kept = VirtualEncoder(Disc(n), [MissedQuadratureState(count=count, seed=seed + 100, skip=skip)])
+        holding.append(measure(g, Reader(Code(n), 0), n, 0, kept.run(g.trajectory)).availability)
     met = sum(a >= 0.80 for a in core)
     print(f"   missed_states drawn with seeds {seeds.start} to {seeds.stop - 1} (F 0): core mean "
           f"{np.mean(core):.3f}, min {min(core):.3f}, max {max(core):.3f}, {met} of {len(core)} at or above "
@@ -1111,6 +1122,9 @@ def missed_states_over_seeds(n: int, seeds: range = range(1, 21)) -> None:
           f"{len(bound)} at or above 0.80; with the missed states drawn over the whole run: core mean "
           f"{np.mean(anywhere):.3f}, min {min(anywhere):.3f}, {sum(a >= 0.80 for a in anywhere)} of "
           f"{len(anywhere)} at or above 0.80")
+    print(f"   of those missed states {acquiring} of {drawn} fall while the core holds no position; without them "
+          f"the mean is {np.mean(holding):.3f} (+{np.mean(holding) - np.mean(anywhere):.3f}: the most a lock that "
+          f"keeps its evidence across them could gain)")
 
 
 ND_INSTANCES = ((6, 2), (7, 2), (7, 3), (8, 3), (9, 3), (8, 4), (9, 4), (10, 4))

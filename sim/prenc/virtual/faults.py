@@ -241,12 +241,14 @@ class MissedQuadratureState:
     Takes quadrature transitions whose next transition is on the other signal and
     holds the first edge back until the second, so the state between them never
     shows. `index` picks the k-th such transition; otherwise `count` are drawn
-    at random with `seed`.
+    at random with `seed`. `skip`: the clocks of first edges left alone among those
+    drawn (the same draw without some of its missed states).
     """
 
     index: int | None = None
     count: int = 1
     seed: int = 0
+    skip: frozenset[int] = frozenset()
 
     def __post_init__(self) -> None:
         _non_negative(count=self.count)
@@ -264,15 +266,19 @@ class MissedQuadratureState:
                 out.append((s1, c1, c2))
         return out
 
-    def apply(self, run: EncoderRun) -> None:
+    def chosen(self, run: EncoderRun) -> list[tuple[str, int, int]]:
+        """The transitions drawn (`skip` included), as candidates() gives them."""
         cands = self.candidates(run)
         if self.index is not None:
-            chosen = [cands[self.index]] if self.index < len(cands) else []
-        else:
-            rng = np.random.default_rng(self.seed)
-            picks = rng.choice(len(cands), size=min(self.count, len(cands)), replace=False)
-            chosen = [cands[i] for i in sorted(picks.tolist())]
-        for signal, c1, c2 in chosen:
+            return [cands[self.index]] if self.index < len(cands) else []
+        rng = np.random.default_rng(self.seed)
+        picks = rng.choice(len(cands), size=min(self.count, len(cands)), replace=False)
+        return [cands[i] for i in sorted(picks.tolist())]
+
+    def apply(self, run: EncoderRun) -> None:
+        for signal, c1, c2 in self.chosen(run):
+            if c1 in self.skip:
+                continue
             sig = run.signals[signal]
             sig[c1:c2] = sig[c1 - 1]
 
