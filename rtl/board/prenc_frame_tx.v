@@ -49,33 +49,34 @@ module prenc_frame_tx #(
   localparam [31:0] MAX_LEN_32 = MAX_LEN;
   localparam [7:0]  MAX_LEN_8  = MAX_LEN_32[7:0];
 
+  // The byte being offered: the frame's fields in order (a phase per field, the payload
+  // counted down), so that the byte and the CRC it goes into come from registers
+  // through a multiplexer of six, not through comparisons of a byte index.
+  localparam [2:0] P_SOF = 3'd0, P_TYPE = 3'd1, P_LEN = 3'd2, P_DATA = 3'd3,
+                   P_CRC_HI = 3'd4, P_CRC_LO = 3'd5;
+
   reg                 busy_reg;
-  reg [7:0]           index;     // byte of the frame being offered
+  reg [2:0]           phase;
+  reg [7:0]           left;      // payload bytes left, this one included (P_DATA)
   reg [7:0]           type_reg;
   reg [7:0]           len_reg;
-  reg [7:0]           crc_hi_at; // index of the CRC's high byte: LEN + 3
-  reg [7:0]           last;      // index of the CRC's low byte: LEN + 4
   reg [8*MAX_LEN-1:0] payload;
   reg [15:0]          crc;
   reg [7:0]           current;
 
   wire [7:0]  len_clipped = (frame_len > MAX_LEN_8) ? MAX_LEN_8 : frame_len;
   wire [15:0] crc_next;
+  wire        in_crc = (phase == P_TYPE) || (phase == P_LEN) || (phase == P_DATA);
 
   always @* begin
-    if (index == 8'd0) begin
-      current = SOF;
-    end else if (index == 8'd1) begin
-      current = type_reg;
-    end else if (index == 8'd2) begin
-      current = len_reg;
-    end else if (index == crc_hi_at) begin
-      current = crc[15:8];
-    end else if (index == last) begin
-      current = crc[7:0];
-    end else begin
-      current = payload[7:0];
-    end
+    case (phase)
+      P_SOF:    current = SOF;
+      P_TYPE:   current = type_reg;
+      P_LEN:    current = len_reg;
+      P_CRC_HI: current = crc[15:8];
+      P_CRC_LO: current = crc[7:0];
+      default:  current = payload[7:0];
+    endcase
   end
 
   prenc_crc16 u_crc (
@@ -87,30 +88,34 @@ module prenc_frame_tx #(
   always @(posedge clk) begin
     if (!busy_reg) begin
       if (start) begin
-        busy_reg  <= 1'b1;
-        index     <= 8'd0;
-        type_reg  <= frame_type;
-        len_reg   <= len_clipped;
-        crc_hi_at <= len_clipped + 8'd3;
-        last      <= len_clipped + 8'd4;
-        payload   <= frame_payload;
-        crc       <= 16'hFFFF;
+        busy_reg <= 1'b1;
+        phase    <= P_SOF;
+        type_reg <= frame_type;
+        len_reg  <= len_clipped;
+        left     <= len_clipped;
+        payload  <= frame_payload;
+        crc      <= 16'hFFFF;
       end
     end else if (byte_ready) begin
-      index <= index + 8'd1;
-      if (index != 8'd0 && index < crc_hi_at) begin
+      if (in_crc) begin
         crc <= crc_next;
       end
-      if (index > 8'd2 && index < crc_hi_at) begin
-        payload <= payload >> 8;
-      end
-      if (index == last) begin
-        busy_reg <= 1'b0;
-      end
+      case (phase)
+        P_SOF:  phase <= P_TYPE;
+        P_TYPE: phase <= P_LEN;
+        P_LEN:  phase <= (left == 8'd0) ? P_CRC_HI : P_DATA;
+        P_DATA: begin
+          payload <= payload >> 8;
+          left    <= left - 8'd1;
+          if (left == 8'd1) phase <= P_CRC_HI;
+        end
+        P_CRC_HI: phase <= P_CRC_LO;
+        default: busy_reg <= 1'b0;   // P_CRC_LO: the last byte
+      endcase
     end
     if (rst) begin
       busy_reg <= 1'b0;
-      index    <= 8'd0;
+      phase    <= P_SOF;
     end
   end
 
