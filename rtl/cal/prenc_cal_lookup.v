@@ -57,6 +57,9 @@ module prenc_cal_lookup #(
   localparam integer QB    = N + 2;
   localparam integer DEPTH = 1 << QB;
 
+  // A read of the word being written is never used (the write spoils the read), so the
+  // block RAM needs no bypass for it (no_rw_check).
+  (* no_rw_check *)
   reg [15:0] table_mem [0:DEPTH-1];
 
   generate
@@ -102,7 +105,7 @@ module prenc_cal_lookup #(
     if (write) begin
       table_mem[address] <= data;
     end
-    word_reg <= table_mem[read_addr];   // the word before this clock's write
+    word_reg <= table_mem[read_addr];   // (as the same word is written: any value, unused)
   end
 
   always @(posedge clk) begin

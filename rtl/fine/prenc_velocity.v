@@ -149,7 +149,10 @@ module prenc_velocity #(
   reg               anch_reg;       // flags
   reg               have_reg;
   reg               bnd_reg;
-  reg [31:0]        rf [0:31];      // the register file (block RAM)
+  // The register file (block RAM). A program never reads a word as it is written
+  // (prenc.fine.engine.check), so the block RAM needs no bypass for it (no_rw_check).
+  (* no_rw_check *)
+  reg [31:0]        rf [0:31];
   reg [31:0]        rd_reg;         // the word the instruction reads
   reg [31:0]        spec_reg;       // ... or its special, registered the clock before
   reg               use_spec_reg;   // ... which of them
