@@ -2,8 +2,8 @@
 // prenc_icebreaker: the reader on an iCEBreaker (iCE40 UP5K, 12 MHz oscillator).
 //
 //   12 MHz (pin 35) -> SB_PLL40_PAD -> 30 MHz system clock: 3 Mbaud is 10 clocks per bit,
-//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at 31.8 MHz
-//   (make synth, placer seed 1; seeds 1 to 4: 31.8 to 33.2 MHz).
+//   1 Mbaud 30, 115200 baud 260 (0.2 % fast). The UP5K closes this top at about 30 to
+//   32 MHz (make synth; docs/guide/synthesis.md has each build's figure).
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; BTN_N too
 //   PMOD1A: P1A1 head1, P1A2 head2, P1A3 sync A, P1A4 sync B      (inputs, 3.3 V)
 //           P1A7 SSI clock in, P1A8 SSI data out, P1A9 SSI Gray select (pulled up: Gray)
@@ -17,14 +17,17 @@
 //   LEDs:   LEDG_N pos_valid, LEDR_N not valid; PMOD2 snap-off LED1..LED5:
 //           ACQUIRE, NORMAL, REDUCED, INCREMENTAL, pos_valid
 //   UVW = 1: U, V, W on LED1, LED2, LED3 (PMOD2 pins 1 to 3 without the snap-off).
-//   With CAL = 1 neither SPI nor ABI nor the warning before a failure (prenc_health: nW
-//   only in a reduced mode): the table and the edges' capture take their room.
+//   With CAL = 1 and no CAL_FILE (the build that `prenc calibrate` runs on: an empty
+//   table, and the edges' capture) neither SPI nor ABI nor the warning before a failure
+//   (prenc_health: nW only in a reduced mode): the capture takes their room. With the
+//   disc's table built in (CAL_FILE) there is no capture, and SPI, ABI and the warning
+//   are built.
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board. The UP5K's 30 block
 // RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity;
 // 0: not built (SSI and BiSS-C send pos_hyb). CAL (1, with FINE = 1): the calibration
 // table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
-// in from CAL_FILE. FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
+// in from CAL_FILE (then without the edges' capture). FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
 // SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS,
 // WARN_BURST, UVW_POLE_PAIRS, EDGE_TOLERANCE: prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0):
 // 1 builds U, V, W (not with CAL = 1).
@@ -88,10 +91,12 @@ module prenc_icebreaker #(
 );
 
   localparam integer CLK_HZ = 30000000;
-  // With the calibration table the UP5K has no room for the drives' SPI and ABI, nor for
-  // the warning.
-  localparam integer DRIVES = (CAL == 1) ? 0 : 1;
-  localparam integer HEALTH = (CAL == 1) ? 0 : 1;
+  // Beside the calibration table the UP5K has room either for the edges' capture (the
+  // build to calibrate on: CAL = 1, no CAL_FILE) or for the drives' SPI and ABI and the
+  // warning (the disc's table built in).
+  localparam integer CAPTURE = (CAL == 1 && CAL_FILE == "") ? 1 : 0;
+  localparam integer DRIVES  = 1 - CAPTURE;
+  localparam integer HEALTH  = 1 - CAPTURE;
 
   generate
     if (UVW != 0 && UVW != 1) begin : g_bad_uvw
@@ -155,7 +160,7 @@ module prenc_icebreaker #(
     .CLK_HZ   (CLK_HZ),
     .BAUD     (BAUD),
     .FINE         (FINE),
-    .EDGE_CAPTURE (CAL),
+    .EDGE_CAPTURE (CAPTURE),
     .CAL          (CAL),
     .CAL_FILE     (CAL_FILE),
     .EDGE_TOLERANCE  (EDGE_TOLERANCE),

@@ -56,6 +56,23 @@ def test_the_icebreaker_with_the_calibration_table_meets_its_clock():
     assert result.used(synth.TARGETS[result.target].brams)[0] >= 22, "the ROMs, the program and the table"
 
 
+def test_the_icebreaker_with_its_discs_table_has_the_drives_and_the_warning(tmp_path):
+    """`make synth BOARD=icebreaker CAL=disc.cal`: the disc's table built in, and instead
+    of the edges' capture (which only calibration needs) the drives' SPI and ABI and the
+    warning; it meets 30 MHz with one of the board seeds."""
+    from prenc.cal.table import Table
+
+    table = Table.zero(10).write(tmp_path / "disc.cal")
+    out = SIM_BUILD / "boards" / "icebreaker-cal-file"
+    result = synth.board_build(synth.BOARDS["icebreaker"], 10, out, cal=str(table))
+    assert result.timing_met
+    assert result.used(synth.TARGETS[result.target].brams)[0] >= 22, "the ROMs, the program and the table"
+    netlist = (REPO / result.bitstream).with_suffix(".json").read_text()
+    for built in ("g_spi.u_spi", "g_abi.u_abi", "g_health"):
+        assert built in netlist, built
+    assert "g_edge_capture" not in netlist
+
+
 def test_the_icebreaker_with_uvw_meets_its_clock():
     """`make synth BOARD=icebreaker PARAMS="UVW=1"`: U, V, W on the snap-off's LED pins,
     beside the warning; it meets 30 MHz with one of the board seeds."""
