@@ -78,12 +78,14 @@ module prenc_step_tracker #(
   // The settings, registered (they change when a register is written): S, q, r, the
   // hysteresis; a new S, and the reset, restart the tracker on the next clock.
   reg [STEPS_BITS-1:0] s_reg;
+  reg [STEPS_BITS-1:0] s_last_reg;   // S - 1, the last step's count
   reg [B-1:0]          q_reg;
   reg [STEPS_BITS-1:0] r_reg;
   reg [B-1:0]          hyst_reg;
   reg                  restart_reg;
   always @(posedge clk) begin
     s_reg       <= steps;
+    s_last_reg  <= steps - 1'b1;
     q_reg       <= q;
     r_reg       <= r;
     hyst_reg    <= hysteresis;
@@ -129,7 +131,7 @@ module prenc_step_tracker #(
       wait_left <= wait_left - 16'd1;
     end
     if (step_up) begin
-      count_reg <= (count_reg == s_reg - 1'b1) ? {STEPS_BITS{1'b0}} : count_reg + 1'b1;
+      count_reg <= (count_reg == s_last_reg) ? {STEPS_BITS{1'b0}} : count_reg + 1'b1;
       lower     <= upper;
       rem_lower <= rem_upper;
       upper     <= above;
@@ -138,7 +140,7 @@ module prenc_step_tracker #(
       down_at   <= upper - hyst_reg;
       wait_left <= min_gap - 16'd1;
     end else if (step_down) begin
-      count_reg <= (count_reg == {STEPS_BITS{1'b0}}) ? s_reg - 1'b1 : count_reg - 1'b1;
+      count_reg <= (count_reg == {STEPS_BITS{1'b0}}) ? s_last_reg : count_reg - 1'b1;
       upper     <= lower;
       rem_upper <= rem_lower;
       lower     <= below;
