@@ -27,10 +27,11 @@
 // RAMs (120 kbit) hold the ROM up to N = 12. FINE (1): the fine position and velocity;
 // 0: not built (SSI and BiSS-C send pos_hyb). CAL (1, with FINE = 1): the calibration
 // table (docs/calibration.md), written over the host link (`prenc calibrate`) or built
-// in from CAL_FILE (then without the edges' capture). FINE_BITS, BISS_MT_BITS, BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO,
-// SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS, ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS,
-// WARN_BURST, UVW_POLE_PAIRS, EDGE_TOLERANCE: prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0):
-// 1 builds U, V, W (not with CAL = 1).
+// in from CAL_FILE (then without the edges' capture). FINE_BITS, BISS_MT_BITS,
+// BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO, SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS,
+// ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS, WARN_BURST, UVW_POLE_PAIRS, EDGE_TOLERANCE:
+// prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0): 1 builds U, V, W (not
+// with CAL = 1).
 
 `resetall
 `timescale 1ns / 1ps
