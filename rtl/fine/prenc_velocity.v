@@ -22,14 +22,14 @@
 // held: the first window's anchor).
 //
 // Engine instructions (prenc.fine.engine): LOAD, ADD, SUB (the operand: a word of the
-// register file, or with `special` one of now, stime, sposc, speed, ltime, lwidth), HALF
-// n (shift right), NUM (low <- acc, acc <- 0), DIV a n (n steps of restoring division by
-// a word; `abortable`: a step held stops it), MUL a n (n steps of shift-and-add), QUOT
-// (acc <- low, saturated to 2^31 - 1; through the adder, plus RF[0], which is 0), STORE
-// a, OUT (speed and acceleration from acc), FLAG, DONE (the step held is done), JMP
-// (conditions: a step held, acc negative, the flags). The register file's word an
-// instruction reads is read the clock before, at the address of the instruction fetched
-// (a program never reads a word the instruction before writes).
+// register file, or with `special` one of now, stime, sposc, speed, ltime,
+// lwidth), HALF n (shift right), NUM (low <- acc, acc <- 0), DIV a n (n steps of
+// restoring division by a word; `abortable`: a step held stops it), MUL a n (n steps of
+// shift-and-add), QUOT (acc <- low, saturated to 2^31 - 1), STORE a, OUT (speed and
+// acceleration from acc), FLAG, DONE (the step held is done), JMP (conditions: a step
+// held, acc negative, the flags). The register file's word an instruction reads is
+// read the clock before, at the address of the instruction fetched (a program never
+// reads a word the instruction before writes).
 //
 // Latency: a fitted speed is loaded 256 clocks after the step that closed its window,
 // and extrapolated to that clock; the velocity output a clock later.
@@ -201,15 +201,12 @@ module prenc_velocity #(
 
   // One adder: LOAD 0 + operand, ADD acc + operand, SUB ~(~acc + operand) = acc -
   // operand, a division's step ~(~shifted + divisor) = shifted - divisor (it fits
-  // without a carry), a multiplication's shifted + operand (when low's top bit is 1),
-  // QUOT the quotient + RF[0] (0: no program writes it).
+  // without a carry), a multiplication's shifted + operand (when low's top bit is 1).
   // The inversions are on the accumulator's side, off the register file's path. While
   // DIV and MUL step, the register file reads their own operand again (it holds still:
   // nothing is stored meanwhile) and fetches the next instruction's on their last step.
   wire [31:0] shifted   = {acc_reg[30:0], stepping & !mul & low_reg[31]};
-  wire [31:0] quotient  = ovf_reg ? 32'h7fff_ffff : low_reg;   // saturated
   wire [31:0] add_a     = stepping ? (mul ? shifted : ~shifted)
-                        : (op == OP_QUOT) ? quotient
                         : load ? 32'd0 : invert ? ~acc_reg : acc_reg;
   wire [32:0] sum       = {1'b0, add_a} + {1'b0, operand};
   wire        fits      = !sum[32];   // shifted >= divisor
@@ -221,7 +218,6 @@ module prenc_velocity #(
   // division's or a multiplication's step that does not add), or as the op says.
   wire        stepping_now = going_reg && ((op == OP_MUL) || ((op == OP_DIV) && !abort));
   wire        adds         = (op == OP_LOAD) || (op == OP_ADD) || (op == OP_SUB) ||
-                             (op == OP_QUOT) ||
                              (stepping_now && ((op == OP_MUL) ? low_reg[31] : fits));
   reg  [31:0] acc_next;
   always @(*) begin
@@ -230,6 +226,7 @@ module prenc_velocity #(
     else if (stepping_now) acc_next = shifted;
     else if (op == OP_HALF) acc_next = {acc_reg[31], acc_reg[31:1]};
     else if (op == OP_NUM) acc_next = 32'd0;
+    else if (op == OP_QUOT) acc_next = ovf_reg ? 32'h7fff_ffff : low_reg;
   end
 
   // The conditions.

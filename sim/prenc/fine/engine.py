@@ -28,8 +28,7 @@ Instructions (`op a n`): the operand is RF[a], or with `s` the hardware's value 
                 the remainder. Abortable: a step pending stops it (the program goes to 0)
     MUL a n     RF[a] taken on the first clock, then n steps of shift-and-add: ACC <-
                 LOW's top n bits times RF[a] (the product below 2^32)
-    QUOT        ACC <- LOW, or 2^31 - 1 if the quotient needs more than 31 bits (through
-                the adder: LOW plus RF[0], which is 0 and never written)
+    QUOT        ACC <- LOW, or 2^31 - 1 if the quotient needs more than 31 bits
     STORE a     RF[a] <- ACC
     OUT a       the velocity block's registers from ACC (OUT_KINDS)
     FLAG a n    flag a <- n                     DONE            the step held is done
@@ -68,8 +67,6 @@ class Instruction:
             return self.a
         if self.op in ("DIV", "MUL"):
             return self.a
-        if self.op == "QUOT":
-            return 0
         return None
 
     def writes(self) -> int | None:
@@ -82,12 +79,8 @@ def signed(value: int, bits: int) -> int:
 
 
 def check(program: list[Instruction], restart: int) -> None:
-    """Refuse a program that writes RF[0] (0: QUOT adds it), reads a word the
-    instruction before writes, or whose instruction a jump (an abort, a restart) goes
-    to reads an operand."""
-    for k, ins in enumerate(program):
-        if ins.writes() == 0:
-            raise ValueError(f"instruction {k} writes RF[0], which must stay 0")
+    """Refuse a program that reads a word the instruction before writes, or whose
+    instruction a jump (an abort, a restart) goes to reads an operand."""
     for k, ins in enumerate(program[:-1]):
         w, r = ins.writes(), program[k + 1].reads()
         if w is not None and w == r:
@@ -201,7 +194,7 @@ class Engine:
                 if self.left:
                     pc_next = self.pc
         elif op == "QUOT":
-            acc = ((WORD_MASK >> 1) if self.ovf else low) + self.operand(ins)
+            acc = (WORD_MASK >> 1) if self.ovf else low
         elif op == "STORE":
             write = (ins.a, acc)
         elif op == "OUT":

@@ -368,7 +368,7 @@ WRITTEN = [
 
 def reads_operand(row) -> bool:
     op, *args = row[1:]
-    return op in ("LOAD", "ADD", "SUB", "DIV", "MUL", "QUOT")
+    return op in ("LOAD", "ADD", "SUB", "DIV", "MUL")
 
 
 def with_landings(written) -> list[tuple]:
