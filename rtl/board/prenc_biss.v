@@ -99,6 +99,16 @@ module prenc_biss #(
   wire fall = ma_q3 & ~ma_q2;
   wire rise = ~ma_q3 & ma_q2;
   wire [7:0] rise_no = rises + 8'd1;  // this rising edge's number
+  // What it sends, decided from the edges counted before it (rises = rise_no - 1), so
+  // that no adder stands before the comparisons; at 8'hFF (saturated) it sends nothing
+  // new (rise_no would wrap to 0).
+  localparam [7:0] LAST = 8'hFF;
+  wire at_ack   = (rises == ACK - 8'd1);
+  wire at_start = (rises == START - 8'd1);
+  wire at_cds   = (rises == CDS - 8'd1);
+  wire in_data  = (rises >= CDS) && (rises < LAST_D);
+  wire in_crc   = (rises >= LAST_D) && (rises < LAST_C);
+  wire past_crc = (rises >= LAST_C) && (rises != LAST);
   // CRC-6, x^6 + x + 1, one bit MSB first.
   wire       feedback = crc[5] ^ shift[BITS-1];
   wire [5:0] crc_step = {crc[4:0], 1'b0} ^ {4'b0000, feedback, feedback};
@@ -120,21 +130,21 @@ module prenc_biss #(
       end
     end else begin
       if (rise) begin
-        if (rises != 8'hFF) begin
+        if (rises != LAST) begin
           rises <= rise_no;
         end
-        if (rise_no == ACK || rise_no == CDS) begin
+        if (at_ack || at_cds) begin
           slo_reg <= 1'b0;
-        end else if (rise_no == START) begin
+        end else if (at_start) begin
           slo_reg <= 1'b1;
-        end else if (rise_no > CDS && rise_no <= LAST_D) begin
+        end else if (in_data) begin
           slo_reg <= shift[BITS-1];
           shift   <= shift << 1;
           crc     <= crc_step;
-        end else if (rise_no > LAST_D && rise_no <= LAST_C) begin
+        end else if (in_crc) begin
           slo_reg <= ~crc[5];
           crc     <= {crc[4:0], 1'b0};
-        end else if (rise_no > LAST_C) begin
+        end else if (past_crc) begin
           slo_reg <= 1'b0;
         end
       end
