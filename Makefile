@@ -8,10 +8,11 @@
 #                ARGS=cal: section 10 alone)
 #   make lint    verilator --lint-only -Wall on every top's file list
 #   make rom     the default conversion ROM into build/rom/
-#   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200] [CAL=disc.cal|1]
+#   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200] [CAL=disc.cal|1] [SEEDS=1,2,3,4]
 #                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/;
 #                CAL: the calibration table built in (a file from prenc calibrate), or
-#                empty (1), for the boards that have one (docs/calibration.md)
+#                empty (1), for the boards that have one (docs/calibration.md); SEEDS:
+#                the placer seeds tried in turn until one meets the clock
 #   make formal  every formal proof of formal/*.sby (SymbiYosys, Yices; also in make test);
 #                the cover traces kept in build/formal/covers/ (index.md)
 #   make mutate  mutants of each proven block, and how many the proofs kill
@@ -101,7 +102,7 @@ lint: $(STAMP)
 	done
 
 synth: $(STAMP)
-	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD)) $(if $(CAL),--cal $(CAL)) $(foreach p,$(PARAMS),--param $(p))
+	@$(PY) scripts/synth.py --board $(BOARD) --bits $(BITS) $(if $(BAUD),--baud $(BAUD)) $(if $(CAL),--cal $(CAL)) $(if $(SEEDS),--seeds $(SEEDS)) $(foreach p,$(PARAMS),--param $(p))
 
 formal: $(STAMP)
 	@$(PY) -m pytest -q -n $(JOBS) tb/formal

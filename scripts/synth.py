@@ -15,8 +15,9 @@ Steps, every tool from PyPI (YoWASP builds, installed by the Makefile):
    no driver conflict);
 3. nextpnr with the board's pin constraints and the clock's target frequency, which
    writes a JSON report (utilization, achieved Fmax per clock); a board is placed with
-   the placer seeds of BOARD_SEEDS in turn until one meets timing (Fmax moves by about
-   +-5 % with the seed, and a full UP5K more), and the report names the seed;
+   the placer seeds of BOARD_SEEDS (or --seeds) in turn until one meets timing (Fmax
+   moves by about +-5 % with the seed, and a full UP5K more), and the report names the
+   seed;
 4. icepack / ecppack to the bitstream;
 5. `report.md` and `report.json` beside the bitstream: logic cells, flip-flops, block
    RAMs, and each clock's Fmax against its constraint.
@@ -252,7 +253,11 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
             _, name, achieved, constraint = reached[0]
             raise FlowError(f"timing failed: clock {name} reached {achieved:.1f} MHz, needs {constraint:.1f} MHz")
         tried = ", ".join(f"{a:.1f} (seed {s})" for s, _, a, _ in reached)
-        raise FlowError(f"timing failed: clock {reached[0][1]} reached {tried} MHz, needs {reached[0][3]:.1f} MHz")
+        used, available = result.used(target.logic)
+        full = f"; the design fills {100 * used / available:.1f} % of the logic cells" if available else ""
+        raise FlowError(f"timing failed: clock {reached[0][1]} reached {tried} MHz, needs {reached[0][3]:.1f} MHz"
+                        f"{full} (a fuller device places worse: try other placer seeds, SEEDS=5,6,7,8, or "
+                        f"leave out what you do not use, e.g. PARAMS=\"ABI=0\"; docs/guide/synthesis.md)")
     if bitstream:
         if target.family == "ice40":
             image = out / f"{top}.bin"
@@ -373,7 +378,8 @@ def board_settable(board: Board) -> set[str]:
 
 
 def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
-                cal: str | None = None, extra: dict[str, int] | None = None) -> Result:
+                cal: str | None = None, extra: dict[str, int] | None = None,
+                seeds: tuple[int, ...] = BOARD_SEEDS) -> Result:
     params = board_parameters(board, bits, out, baud, cal)
     unknown = set(extra or {}) - board_settable(board)
     if unknown:
@@ -381,7 +387,7 @@ def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
     params.update(extra or {})
     sources = file_list(board.folder / f"{board.top}.f")
     return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins,
-                 seeds=BOARD_SEEDS)
+                 seeds=tuple(seeds))
 
 
 def check_taps(bits: int) -> tuple[int, ...]:
@@ -472,14 +478,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
                         help="set another integer parameter of the top (e.g. HYPOTHESES=0 with --core; "
                              "BISS_ST_BITS=23 with --board)")
-    parser.add_argument("--seeds", default="1", metavar="S[,S...]",
-                        help="with --core: nextpnr placer seeds (default 1); with several, each is placed in "
-                             "<out>/seed<S> and the mean Fmax is printed (Fmax moves by +-5 %% with the seed)")
+    parser.add_argument("--seeds", metavar="S[,S...]",
+                        help="nextpnr placer seeds. With --board: tried in turn until one meets the clock "
+                             f"(default {','.join(map(str, BOARD_SEEDS))}). With --core (default 1): with several, "
+                             "each is placed in <out>/seed<S> and the mean Fmax is printed (Fmax moves by +-5 %% "
+                             "with the seed)")
     parser.add_argument("--out", type=Path, help="output folder (default build/synth/<board or core>)")
     args = parser.parse_args(argv)
     try:
         extra = core_parameters(args.param)
-        seeds = placer_seeds(args.seeds)
+        seeds = placer_seeds(args.seeds) if args.seeds else ([1] if args.core else list(BOARD_SEEDS))
     except ValueError as err:
         parser.error(str(err))
     if args.board and set(extra) - board_settable(BOARDS[args.board]):
@@ -488,8 +496,6 @@ def main(argv: list[str] | None = None) -> int:
                      f"{', '.join(sorted(board_settable(BOARDS[args.board])))})")
     if args.cal and not args.board:
         parser.error("--cal goes with --board")
-    if seeds != [1] and not args.core:
-        parser.error("--seeds goes with --core")
     name = args.board or f"{args.top.removeprefix('prenc_')}-{args.core}"
     out = args.out or REPO / "build" / "synth" / f"{name}-n{args.bits}"
     if out.exists():
@@ -497,13 +503,14 @@ def main(argv: list[str] | None = None) -> int:
     out.mkdir(parents=True)
     # One seed: a missed timing is an error at once. Several: every seed is placed and
     # reported, and a seed that missed timing makes the exit status 1 at the end.
-    sweep = len(seeds) > 1
+    sweep = bool(args.core) and len(seeds) > 1
     fmax, missed = [], []
-    for seed in seeds:
+    for seed in seeds if args.core else seeds[:1]:
         where = out / f"seed{seed}" if sweep else out
         try:
             if args.board:
-                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal, extra)
+                result = board_build(BOARDS[args.board], args.bits, where, args.baud, args.cal, extra,
+                                     seeds=tuple(seeds))
             else:
                 result = core_build(args.core, args.bits, args.freq, where, top=args.top, parameters=extra,
                                     seed=seed, require_timing=not sweep)
