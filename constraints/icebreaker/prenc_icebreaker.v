@@ -31,7 +31,8 @@
 // BISS_ST_BITS, BISS_ERROR_HIGH, SPI_ZERO, SPI_SETTINGS1, SPI_SETTINGS2, ABI_STEPS,
 // ABI_EDGE_NS, SSI_WARNING, WARN_SLOTS, WARN_BURST, UVW_POLE_PAIRS, EDGE_TOLERANCE:
 // prenc_board's (make synth PARAMS="NAME=VALUE ..."). UVW (0): 1 builds U, V, W (not
-// with CAL = 1).
+// with CAL = 1). SPI, ABI (1): 0 leaves that drive's output out (its pins idle: MISO
+// high impedance, A, B, I low), for room and timing margin on a full UP5K.
 
 `resetall
 `timescale 1ns / 1ps
@@ -60,7 +61,9 @@ module prenc_icebreaker #(
   parameter integer WARN_SLOTS      = 128,
   parameter integer WARN_BURST      = 8,
   parameter integer UVW             = 0,
-  parameter integer UVW_POLE_PAIRS  = 0
+  parameter integer UVW_POLE_PAIRS  = 0,
+  parameter integer SPI             = 1,
+  parameter integer ABI             = 1
 ) (
   input  wire CLK,
   input  wire BTN_N,
@@ -98,8 +101,18 @@ module prenc_icebreaker #(
   localparam integer CAPTURE = (CAL == 1 && CAL_FILE == "") ? 1 : 0;
   localparam integer DRIVES  = 1 - CAPTURE;
   localparam integer HEALTH  = 1 - CAPTURE;
+  localparam integer SPI_ON  = (DRIVES == 1 && SPI == 1) ? 1 : 0;
+  localparam integer ABI_ON  = (DRIVES == 1 && ABI == 1) ? 1 : 0;
 
   generate
+    if (SPI != 0 && SPI != 1) begin : g_bad_spi
+      initial $display("ERROR: %m: parameter SPI = %0d must be 0 or 1", SPI);
+      prenc_icebreaker_parameter_SPI_must_be_0_or_1 u_stop ();
+    end
+    if (ABI != 0 && ABI != 1) begin : g_bad_abi
+      initial $display("ERROR: %m: parameter ABI = %0d must be 0 or 1", ABI);
+      prenc_icebreaker_parameter_ABI_must_be_0_or_1 u_stop ();
+    end
     if (UVW != 0 && UVW != 1) begin : g_bad_uvw
       initial $display("ERROR: %m: parameter UVW = %0d must be 0 or 1", UVW);
       prenc_icebreaker_parameter_UVW_must_be_0_or_1 u_stop ();
@@ -177,8 +190,8 @@ module prenc_icebreaker #(
     .SSI_WARNING     (SSI_WARNING),
     .WARN_SLOTS      (WARN_SLOTS),
     .WARN_BURST      (WARN_BURST),
-    .SPI             (DRIVES),
-    .ABI             (DRIVES),
+    .SPI             (SPI_ON),
+    .ABI             (ABI_ON),
     .HEALTH          (HEALTH),
     .UVW             (UVW),
     .UVW_POLE_PAIRS  (UVW_POLE_PAIRS)

