@@ -487,7 +487,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         extra = core_parameters(args.param)
-        seeds = placer_seeds(args.seeds) if args.seeds else ([1] if args.core else list(BOARD_SEEDS))
+        seeds = placer_seeds(args.seeds) if args.seeds is not None else ([1] if args.core else list(BOARD_SEEDS))
     except ValueError as err:
         parser.error(str(err))
     if args.board and set(extra) - board_settable(BOARDS[args.board]):

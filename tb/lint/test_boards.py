@@ -258,10 +258,10 @@ def test_a_seed_sweep_reports_every_seed_then_fails_on_a_missed_clock(capsys):
                                   ["--core", "ice40-hx8k", "--seeds", "2,2"],
                                   ["--core", "ice40-hx8k", "--seeds", "-1"],
                                   ["--core", "ice40-hx8k", "--seeds", ""],
-                                  ["--board", "icebreaker", "--seeds", "1,2"]])
+                                  ["--board", "icebreaker", "--seeds", "1,1"]])
 def test_synth_rejects_malformed_seeds(argv, capsys):
-    """A seed list that is not distinct non-negative integers, or seeds for a board
-    build, stops before any synthesis with a message naming --seeds."""
+    """A seed list that is not distinct non-negative integers, for the core or a board,
+    stops before any synthesis with a message naming --seeds."""
     with pytest.raises(SystemExit) as stop:
         synth.main(argv)
     assert stop.value.code == 2
