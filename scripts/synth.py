@@ -249,15 +249,15 @@ def build(top: str, sources: list[Path], target_name: str, parameters: dict[str,
         name, clock = min(result.clocks.items(), key=lambda kv: kv[1]["achieved"] - kv[1]["constraint"])
         reached.append((result.seed, name, clock["achieved"], clock["constraint"]))
     else:
-        if len(reached) == 1:
-            _, name, achieved, constraint = reached[0]
-            raise FlowError(f"timing failed: clock {name} reached {achieved:.1f} MHz, needs {constraint:.1f} MHz")
-        tried = ", ".join(f"{a:.1f} (seed {s})" for s, _, a, _ in reached)
         used, available = result.used(target.logic)
         full = f"; the design fills {100 * used / available:.1f} % of the logic cells" if available else ""
+        if len(reached) == 1:
+            _, name, achieved, constraint = reached[0]
+            raise FlowError(f"timing failed: clock {name} reached {achieved:.1f} MHz, needs {constraint:.1f} MHz"
+                            f"{full}")
+        tried = ", ".join(f"{a:.1f} (seed {s})" for s, _, a, _ in reached)
         raise FlowError(f"timing failed: clock {reached[0][1]} reached {tried} MHz, needs {reached[0][3]:.1f} MHz"
-                        f"{full} (a fuller device places worse: try other placer seeds, SEEDS=5,6,7,8, or "
-                        f"leave out what you do not use, e.g. PARAMS=\"ABI=0\"; docs/guide/synthesis.md)")
+                        f"{full}")
     if bitstream:
         if target.family == "ice40":
             image = out / f"{top}.bin"
@@ -386,8 +386,21 @@ def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
         raise FlowError(f"--param {', '.join(sorted(unknown))}: not a parameter of {board.top}")
     params.update(extra or {})
     sources = file_list(board.folder / f"{board.top}.f")
-    return build(board.top, sources, board.target, params, board.clock_mhz, out, pins=board.folder / board.pins,
-                 seeds=tuple(seeds))
+    try:
+        return build(board.top, sources, board.target, params, board.clock_mhz, out,
+                     pins=board.folder / board.pins, seeds=tuple(seeds))
+    except FlowError as err:
+        if str(err).startswith("timing failed"):
+            raise FlowError(f"{err} ({timing_advice(board)})") from None
+        raise
+
+
+def timing_advice(board: Board) -> str:
+    """What to try when a board build misses its clock on every seed
+    (docs/guide/synthesis.md, "A build that misses its clock")."""
+    options = [f'PARAMS="{p}=0"' for p in ("ABI", "SPI", "UVW") if p in board_settable(board)]
+    leave_out = f", or leave out an output you do not use ({', '.join(options)})" if options else ""
+    return f"a fuller device places worse: try other placer seeds, SEEDS=5,6,7,8{leave_out}; docs/guide/synthesis.md"
 
 
 def check_taps(bits: int) -> tuple[int, ...]:

@@ -102,13 +102,13 @@ module prenc_biss #(
   // What it sends, decided from the edges counted before it (rises = rise_no - 1), so
   // that no adder stands before the comparisons; at 8'hFF (saturated) it sends nothing
   // new (rise_no would wrap to 0).
-  localparam [7:0] LAST = 8'hFF;
+  localparam [7:0] RISES_MAX = 8'hFF;   // the count saturates
   wire at_ack   = (rises == ACK - 8'd1);
   wire at_start = (rises == START - 8'd1);
   wire at_cds   = (rises == CDS - 8'd1);
   wire in_data  = (rises >= CDS) && (rises < LAST_D);
   wire in_crc   = (rises >= LAST_D) && (rises < LAST_C);
-  wire past_crc = (rises >= LAST_C) && (rises != LAST);
+  wire past_crc = (rises >= LAST_C) && (rises != RISES_MAX);
   // CRC-6, x^6 + x + 1, one bit MSB first.
   wire       feedback = crc[5] ^ shift[BITS-1];
   wire [5:0] crc_step = {crc[4:0], 1'b0} ^ {4'b0000, feedback, feedback};
@@ -130,7 +130,7 @@ module prenc_biss #(
       end
     end else begin
       if (rise) begin
-        if (rises != LAST) begin
+        if (rises != RISES_MAX) begin
           rises <= rise_no;
         end
         if (at_ack || at_cds) begin

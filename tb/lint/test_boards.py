@@ -106,6 +106,16 @@ def test_the_icebreaker_with_its_table_leaves_out_the_drive_the_params_say(tmp_p
     assert elaborated_modules("icebreaker", out, ABI=0, SPI=0) == {"prenc_health"}
 
 
+def test_a_missed_board_clock_names_the_outputs_its_top_can_leave_out():
+    """The advice of a board build that missed its clock names only the drive outputs
+    that board's top takes as parameters (the iCEBreaker's SPI, ABI, UVW; the iCEstick
+    has none), and the seeds to try."""
+    assert synth.timing_advice(synth.BOARDS["icebreaker"]).startswith(
+        'a fuller device places worse: try other placer seeds, SEEDS=5,6,7,8, or leave out an output '
+        'you do not use (PARAMS="ABI=0", PARAMS="SPI=0", PARAMS="UVW=0")')
+    assert "PARAMS" not in synth.timing_advice(synth.BOARDS["icestick"])
+
+
 def test_the_icebreaker_with_uvw_meets_its_clock():
     """`make synth BOARD=icebreaker PARAMS="UVW=1"`: U, V, W on the snap-off's LED pins,
     beside the warning; it meets 30 MHz with one of the board seeds."""
@@ -196,12 +206,12 @@ def test_a_clock_that_is_not_met_fails_the_build():
 
 def test_a_board_build_tries_the_next_placer_seed_and_names_every_one_that_failed():
     """Board builds place with synth.BOARD_SEEDS (or `make synth SEEDS=...`) in turn until
-    one meets timing; when none does, the error gives each seed's Fmax, how full the
-    device is, and what to try."""
+    one meets timing; when none does, the error gives each seed's Fmax and how full the
+    device is (a board build adds what to try: synth.timing_advice)."""
     out = SIM_BUILD / "boards" / "too-fast-seeds"
     with pytest.raises(synth.FlowError, match=r"timing failed: clock .* reached [0-9.]+ \(seed 1\), "
                                               r"[0-9.]+ \(seed 2\) MHz, needs 400.0 MHz; the design fills "
-                                              r"[0-9.]+ % of the logic cells \(.*SEEDS=5,6,7,8"):
+                                              r"[0-9.]+ % of the logic cells$"):
         synth.build("prenc_ssi", synth.file_list(synth.RTL / "board" / "prenc_ssi.f"), "ice40-hx8k",
                     {"WIDTH": 32}, 400.0, out, bitstream=False, seeds=(1, 2))
 
