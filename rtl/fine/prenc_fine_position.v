@@ -99,32 +99,46 @@ module prenc_fine_position #(
     end
   endgenerate
 
-  // Fixed point and widths.
+  function integer bits_of(input integer value);   // bits of a value >= 0, at least 1
+    integer v;
+    begin
+      bits_of = 1;
+      for (v = value / 2; v > 0; v = v / 2) bits_of = bits_of + 1;
+    end
+  endfunction
+
+  // Fixed point and widths (signed values: their sign bit included).
   localparam integer V_FRAC     = 32;                // velocity, travel
   localparam integer FRAC       = 16;                // fraction, extrapolation
   localparam integer CAL_FRAC   = 12;                // the table's corrections
   localparam integer F          = FINE_BITS;
   localparam integer W          = N + 2 + F;
   localparam integer TB         = V_FRAC + 3;        // travel, signed: below 4 quarters
-  localparam integer XB         = FRAC + 13;         // the fraction with the extrapolation
+  localparam integer QB         = FRAC + 5;          // the fraction clamped: below 16 quarters
+  // The extrapolation, velocity (below 1/2 quarter a clock, 2^-16: 16 bits) x
+  // LOOKAHEAD_HALVES (LB bits): PB bits; the fraction with half of it: XB bits.
+  localparam integer LB         = bits_of(LOOKAHEAD_HALVES);
+  localparam integer PB         = FRAC + LB;
+  localparam integer XB         = ((QB > PB - 1) ? QB : PB - 1) + 1;
+  localparam integer OB         = W + XB;            // the output's fraction, sign-extended
   localparam integer STEP_DELAY = 3;
   localparam integer PHASE_SHIFT = 2;                // the phase keeps 1 - 2^-2 of its own
 
-  localparam signed [FRAC+4:0] ONE       = 1 << FRAC;
+  localparam signed [QB-1:0] ONE       = 1 << FRAC;
   localparam signed [9:0]      LOOKAHEAD = LOOKAHEAD_HALVES[9:0];
 
   reg [STEP_DELAY-1:0] step_d_reg;
   reg [STEP_DELAY-1:0] cw_d_reg;
   reg signed [TB-1:0]  travel_reg;
   reg                  cw_reg;
-  reg signed [XB-1:0]  ext_reg;          // velocity x LOOKAHEAD_HALVES, 2^-16
-  reg signed [FRAC+4:0] frac_a_reg;      // stage A
-  reg signed [FRAC+4:0] mid_a_reg;       // the quarter's middle
+  reg signed [PB-1:0]  ext_reg;          // velocity x LOOKAHEAD_HALVES, 2^-16
+  reg signed [QB-1:0]  frac_a_reg;       // stage A
+  reg signed [QB-1:0]  mid_a_reg;        // the quarter's middle
   reg [N+1:0]          pos_a_reg;
   reg                  valid_a_reg;
   reg                  vv_a_reg;
   reg signed [XB-1:0]  sum_b_reg;        // stage B
-  reg signed [FRAC+4:0] mid_b_reg;
+  reg signed [QB-1:0]  mid_b_reg;
   reg [N+1:0]          pos_b_reg;
   reg                  valid_b_reg;
   reg                  vv_b_reg;
@@ -136,18 +150,18 @@ module prenc_fine_position #(
   // quarter's span [lo, hi) (without CAL: [0, 1)), to 2^-16.
   wire [15:0]           c_lo_used = (CAL == 1) ? c_lo : 16'd0;
   wire [15:0]           c_hi_used = (CAL == 1) ? c_hi : 16'd0;
-  wire signed [FRAC+4:0] lo   = $signed({c_lo_used[15], c_lo_used, {(FRAC - CAL_FRAC){1'b0}}});
-  wire signed [FRAC+4:0] hi   = ONE +
+  wire signed [QB-1:0] lo   = $signed({c_lo_used[15], c_lo_used, {(FRAC - CAL_FRAC){1'b0}}});
+  wire signed [QB-1:0] hi   = ONE +
                                $signed({c_hi_used[15], c_hi_used, {(FRAC - CAL_FRAC){1'b0}}});
-  wire signed [FRAC+4:0] moved = {{(FRAC + 5 - TB + V_FRAC - FRAC){travel_reg[TB-1]}},
+  wire signed [QB-1:0] moved = {{(QB - TB + V_FRAC - FRAC){travel_reg[TB-1]}},
                                   travel_reg[TB-1:V_FRAC-FRAC]};   // floor, 2^-16
-  wire signed [FRAC+4:0] reach = (cw_reg ? lo : hi) + moved;
-  wire signed [FRAC+4:0] clamped = (reach < lo) ? lo : (reach >= hi) ? hi - 1'b1 : reach;
+  wire signed [QB-1:0] reach = (cw_reg ? lo : hi) + moved;
+  wire signed [QB-1:0] clamped = (reach < lo) ? lo : (reach >= hi) ? hi - 1'b1 : reach;
   // PHASE_FILTER: the phase against the crossed edge, edge - crossed (-/+ the quarter's
   // width, below 2 quarters) in travel's units plus the travel as it would be this clock.
   wire signed [TB-1:0]  advanced  = travel_reg + {{(TB - 32){velocity[31]}}, velocity};
-  wire signed [FRAC+5:0] gap      = cw_reg ? {lo[FRAC+4], lo} - {hi[FRAC+4], hi}
-                                           : {hi[FRAC+4], hi} - {lo[FRAC+4], lo};
+  wire signed [QB:0] gap      = cw_reg ? {lo[QB-1], lo} - {hi[QB-1], hi}
+                                           : {hi[QB-1], hi} - {lo[QB-1], lo};
   wire signed [TB-1:0]  phase     = advanced +
                                     {gap[TB-V_FRAC+FRAC-1:0], {(V_FRAC - FRAC){1'b0}}};
   wire                  phase_in  = (phase[TB-1:V_FRAC-1] == {(TB - V_FRAC + 1){1'b0}}) ||
@@ -156,11 +170,15 @@ module prenc_fine_position #(
   wire                  keep      = (PHASE_FILTER == 1) && (cw_d_reg[STEP_DELAY-1] == cw_reg) &&
                                     velocity_valid && phase_in;
   wire signed [TB-1:0]  kept      = phase - (phase >>> PHASE_SHIFT);
-  wire signed [FRAC+5:0] span  = {lo[FRAC+4], lo} + {hi[FRAC+4], hi};
+  wire signed [QB:0] span  = {lo[QB-1], lo} + {hi[QB-1], hi};
   // Stage B, C.
-  wire signed [XB-1:0]  frac_wide = {{(XB - FRAC - 5){frac_a_reg[FRAC+4]}}, frac_a_reg};
-  wire signed [XB-1:0]  truncated = sum_b_reg >>> (FRAC - F);
-  wire signed [FRAC+4:0] mid_trunc = mid_b_reg >>> (FRAC - F);
+  wire signed [XB-1:0]  frac_wide = {{(XB - QB){frac_a_reg[QB-1]}}, frac_a_reg};
+  wire signed [XB-1:0]  ext_half  = {{(XB - PB + 1){ext_reg[PB-1]}}, ext_reg[PB-1:1]};
+  // The fraction (negative below the quarter's start) sign-extended to the output's width.
+  wire signed [OB-1:0]  sum_wide  = {{W{sum_b_reg[XB-1]}}, sum_b_reg};
+  wire signed [OB-1:0]  mid_wide  = {{(OB - QB){mid_b_reg[QB-1]}}, mid_b_reg};
+  wire signed [OB-1:0]  truncated = sum_wide >>> (FRAC - F);
+  wire signed [OB-1:0]  mid_trunc = mid_wide >>> (FRAC - F);
   wire [W-1:0]          fraction  = vv_b_reg ? truncated[W-1:0] : mid_trunc[W-1:0];
   wire [W-1:0]          base      = {pos_b_reg, {F{1'b0}}};
   // The travel goes on while |travel| < 2 quarters (the register's bits: the test beside
@@ -169,11 +187,12 @@ module prenc_fine_position #(
                                     ((travel_reg[TB-1:V_FRAC+1] == {(TB - V_FRAC - 1){1'b1}}) &&
                                      (travel_reg[V_FRAC:0] != {(V_FRAC + 1){1'b0}}));
   // The extrapolation's product, from the velocity to 2^-16.
-  wire signed [XB-1:0]  v_16      = {{(XB - 32 + V_FRAC - FRAC){velocity[31]}},
+  wire signed [PB-1:0]  v_16      = {{(PB - 32 + V_FRAC - FRAC){velocity[31]}},
                                      velocity[31:V_FRAC-FRAC]};
-  wire                  unused_ok = &{1'b0, truncated[XB-1:W], mid_trunc[FRAC+4:W], span[0],
+  wire                  unused_ok = &{1'b0, truncated[OB-1:W], mid_trunc[OB-1:W], span[0],
+                                      ext_reg[0],
                                       velocity[V_FRAC-FRAC-1:0], travel_reg[V_FRAC-FRAC-1:0],
-                                      gap[FRAC+5:TB-V_FRAC+FRAC]};
+                                      gap[QB:TB-V_FRAC+FRAC]};
 
   always @(posedge clk) begin
     // Stage C.
@@ -181,14 +200,14 @@ module prenc_fine_position #(
     valid_reg        <= valid_b_reg;
     interpolated_reg <= valid_b_reg & vv_b_reg;
     // Stage B.
-    sum_b_reg   <= frac_wide + (ext_reg >>> 1);
+    sum_b_reg   <= frac_wide + ext_half;
     mid_b_reg   <= mid_a_reg;
     pos_b_reg   <= pos_a_reg;
     valid_b_reg <= valid_a_reg;
     vv_b_reg    <= vv_a_reg;
     // Stage A.
     frac_a_reg  <= clamped;
-    mid_a_reg   <= span[FRAC+5:1];
+    mid_a_reg   <= span[QB:1];
     pos_a_reg   <= pos_hyb;
     valid_a_reg <= pos_valid;
     vv_a_reg    <= velocity_valid;
@@ -207,8 +226,8 @@ module prenc_fine_position #(
       cw_d_reg         <= {STEP_DELAY{1'b1}};
       travel_reg       <= {TB{1'b0}};
       cw_reg           <= 1'b1;
-      ext_reg          <= {XB{1'b0}};
-      frac_a_reg       <= {(FRAC + 5){1'b0}};
+      ext_reg          <= {PB{1'b0}};
+      frac_a_reg       <= {QB{1'b0}};
       mid_a_reg        <= ONE >>> 1;
       mid_b_reg        <= ONE >>> 1;
       pos_a_reg        <= {(N + 2){1'b0}};
@@ -255,13 +274,15 @@ module prenc_fine_position #(
     assume ($signed(velocity) < (32'sd1 <<< (V_FRAC - 4)) &&
             $signed(velocity) > -(32'sd1 <<< (V_FRAC - 4)));
   end
+  localparam integer F_XB    = FRAC + 13;   // the bound's arithmetic, wide enough for any
+                                            // LOOKAHEAD_HALVES
   localparam integer F_SHIFT = FRAC - F;
   localparam integer F_CS    = CAL_FRAC - F;   // the corrections in fraction units
   wire [W-1:0]         f_diff  = fine_pos_reg - {f_pos_d3, {F{1'b0}}};
   wire signed [W:0]    f_error = {f_diff[W-1], f_diff};   // in 2^-F quarters
-  wire signed [XB-1:0] f_v_16  = $signed(f_v_d3) >>> (V_FRAC - FRAC);   // floor, 2^-16
-  wire signed [XB-1:0] f_ext   = (f_v_16 * $signed({1'b0, LOOKAHEAD})) >>> 1;
-  wire signed [XB-1:0] f_ext_q = f_ext >>> F_SHIFT;   // floor, in 2^-F quarters
+  wire signed [F_XB-1:0] f_v_16  = $signed(f_v_d3) >>> (V_FRAC - FRAC);   // floor, 2^-16
+  wire signed [F_XB-1:0] f_ext   = (f_v_16 * $signed({1'b0, LOOKAHEAD})) >>> 1;
+  wire signed [F_XB-1:0] f_ext_q = f_ext >>> F_SHIFT;   // floor, in 2^-F quarters
   wire signed [16:0]   f_lo_q  = $signed({f_lo_d3[15], f_lo_d3}) >>> F_CS;   // floor
   wire signed [16:0]   f_hi_q  = ($signed({f_hi_d3[15], f_hi_d3}) + (17'sd1 <<< F_CS) - 17'sd1)
                                  >>> F_CS;                                     // ceil
