@@ -152,6 +152,11 @@ module prenc_mode_fsm #(
   localparam [5:0]  NEED_ONE    = NEED_ONE32[5:0];
   localparam [5:0]  DEEP_BOTH   = DEEP_BOTH32[5:0];
   localparam [5:0]  DEEP_ONE    = DEEP_ONE32[5:0];
+
+  // A span has reached a depth.
+  function reaches(input [5:0] span, input [5:0] depth);
+    reaches = (span >= depth);
+  endfunction
   // Slots relative to the transition, signed, wide enough for +-(DUAL_SPAN + 1).
   localparam integer RW = 7;
   localparam signed [RW-1:0] SPAN_P = SPAN32[RW-1:0];
@@ -179,10 +184,12 @@ module prenc_mode_fsm #(
   // The span comparisons are registered one clock ahead, from the J1 input.
   // Each span against the constant depths, then the head's quiet chooses (a comparison
   // with a chosen depth is an adder's carry chain; with a constant, plain logic).
-  wire [1:0] ge_need_both = {span2_ahead >= NEED_BOTH, span1_ahead >= NEED_BOTH};
-  wire [1:0] ge_deep_both = {span2_ahead >= DEEP_BOTH, span1_ahead >= DEEP_BOTH};
-  wire [1:0] ge_need_one  = {span2_ahead >= NEED_ONE, span1_ahead >= NEED_ONE};
-  wire [1:0] ge_deep_one  = {span2_ahead >= DEEP_ONE, span1_ahead >= DEEP_ONE};
+  // (A function: with LOCK_BOTH or LOCK_ONE = 1 a depth is 0, always reached, which
+  // lint would flag as a constant comparison.)
+  wire [1:0] ge_need_both = {reaches(span2_ahead, NEED_BOTH), reaches(span1_ahead, NEED_BOTH)};
+  wire [1:0] ge_deep_both = {reaches(span2_ahead, DEEP_BOTH), reaches(span1_ahead, DEEP_BOTH)};
+  wire [1:0] ge_need_one  = {reaches(span2_ahead, NEED_ONE), reaches(span1_ahead, NEED_ONE)};
+  wire [1:0] ge_deep_one  = {reaches(span2_ahead, DEEP_ONE), reaches(span1_ahead, DEEP_ONE)};
   reg  [1:0] full;        // full and steady: its offset may be read
   reg  [1:0] ready;       // full, steady and settled
   reg        blocked;     // a full, settled track's offset just moved: no lock now

@@ -139,6 +139,12 @@ module prenc_matrix_reader #(
   localparam [31:0] BAND_END_ROW = BAND_END;
   localparam [31:0] LAST_INDEX = N - 1;
 
+  // A row at or below a row (a function: with TOP = 0 the band's first row is 0, which
+  // every row is at or below, and lint would flag the comparison as constant).
+  function at_or_below(input [7:0] row, input [7:0] first);
+    at_or_below = (row >= first);
+  endfunction
+
   reg  [7:0]          x_reg;                   // coordinates of the next pixel
   reg  [7:0]          y_reg;
   reg  [PHASE_BITS-1:0] xmod_reg;              // x mod CELL of the next pixel
@@ -156,7 +162,7 @@ module prenc_matrix_reader #(
   wire [7:0]          cx = pixel_first ? 8'd0 : x_reg;
   wire [7:0]          cy = pixel_first ? 8'd0 : y_reg;
   wire [PHASE_BITS-1:0] cmod = pixel_first ? {PHASE_BITS{1'b0}} : xmod_reg;
-  wire                in_band = cy >= TOP_ROW[7:0] && cy < BAND_END_ROW[7:0];
+  wire                in_band = at_or_below(cy, TOP_ROW[7:0]) && cy < BAND_END_ROW[7:0];
   wire                row_end = cx == LAST_X[7:0];
   wire [PB-1:0]       diff = pixel > prev_reg ? pixel - prev_reg : prev_reg - pixel;
 

