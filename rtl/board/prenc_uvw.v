@@ -69,25 +69,31 @@ module prenc_uvw #(
   endfunction
   localparam [31:0] FIXED = 6 * POLE_PAIRS;
 
-  reg [31:0] sectors_32;
-  reg [31:0] q_32;
-  reg [31:0] r_32;
+  // The sectors of a turn, 6 P, and q, r for the tracker: POLE_PAIRS's, or UVWPP's (the
+  // settings' choice, always computed, so that the block is combinational in every
+  // simulator whichever is used).
+  reg  [31:0] chosen_sectors;
+  reg  [31:0] chosen_q;
+  reg  [31:0] chosen_r;
   always @* begin
-    if (POLE_PAIRS != 0) begin
-      sectors_32 = FIXED; q_32 = turn_div(FIXED); r_32 = turn_mod(FIXED);
-    end else begin
-      case (settings2[2:0])
-        3'd0:    begin sectors_32 = 6;  q_32 = turn_div(6);  r_32 = turn_mod(6);  end
-        3'd1:    begin sectors_32 = 12; q_32 = turn_div(12); r_32 = turn_mod(12); end
-        3'd2:    begin sectors_32 = 18; q_32 = turn_div(18); r_32 = turn_mod(18); end
-        3'd3:    begin sectors_32 = 24; q_32 = turn_div(24); r_32 = turn_mod(24); end
-        3'd4:    begin sectors_32 = 30; q_32 = turn_div(30); r_32 = turn_mod(30); end
-        3'd5:    begin sectors_32 = 36; q_32 = turn_div(36); r_32 = turn_mod(36); end
-        3'd6:    begin sectors_32 = 42; q_32 = turn_div(42); r_32 = turn_mod(42); end
-        default: begin sectors_32 = 42; q_32 = turn_div(42); r_32 = turn_mod(42); end   // 7, as 6
-      endcase
-    end
+    case (settings2[2:0])
+      3'd0:    begin chosen_sectors = 6;  chosen_q = turn_div(6);  chosen_r = turn_mod(6);  end
+      3'd1:    begin chosen_sectors = 12; chosen_q = turn_div(12); chosen_r = turn_mod(12); end
+      3'd2:    begin chosen_sectors = 18; chosen_q = turn_div(18); chosen_r = turn_mod(18); end
+      3'd3:    begin chosen_sectors = 24; chosen_q = turn_div(24); chosen_r = turn_mod(24); end
+      3'd4:    begin chosen_sectors = 30; chosen_q = turn_div(30); chosen_r = turn_mod(30); end
+      3'd5:    begin chosen_sectors = 36; chosen_q = turn_div(36); chosen_r = turn_mod(36); end
+      3'd6:    begin chosen_sectors = 42; chosen_q = turn_div(42); chosen_r = turn_mod(42); end
+      default: begin   // 7, as 6
+        chosen_sectors = 42; chosen_q = turn_div(42); chosen_r = turn_mod(42);
+      end
+    endcase
   end
+  localparam [31:0] FIXED_Q = (POLE_PAIRS != 0) ? turn_div(FIXED) : 32'd0;
+  localparam [31:0] FIXED_R = (POLE_PAIRS != 0) ? turn_mod(FIXED) : 32'd0;
+  wire [31:0] sectors_32 = (POLE_PAIRS != 0) ? FIXED : chosen_sectors;
+  wire [31:0] q_32       = (POLE_PAIRS != 0) ? FIXED_Q : chosen_q;
+  wire [31:0] r_32       = (POLE_PAIRS != 0) ? FIXED_R : chosen_r;
   // The hysteresis: (3 - HYS) LSB of 14 bits, as prenc_abi's.
   wire [B-1:0]  hysteresis = {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
   wire          restart;   // the tracker starts again at sector 0 (after reset, a new P)

@@ -3,7 +3,8 @@
 clock, and against the electrical angle.
 
 The position (B = 16) moves as in tb/board/prenc_abi (speeds both ways, stops,
-reversals, dropouts of `valid`); UVWPP and HYS change now and then. Every clock U, V
+reversals, dropouts of `valid`); UVWPP and HYS change now and then (with POLE_PAIRS = 7,
+UVWPP is ignored). Every clock U, V
 and W equal the model's; they are 000 while the position is not valid, and whenever
 the sectors have caught up with the position they are the Hall pattern of the
 electrical angle P x position (prenc.board.abi.UVW_PATTERN), within one sector of it for
@@ -33,7 +34,8 @@ async def equals_its_model_and_the_electrical_angle(dut):
     dut.valid.value = 0
     dut.settings2.value = settings2
     await start_clock_and_reset(dut, 3)
-    model = spec.Uvw(BITS)
+    fixed = int(dut.POLE_PAIRS.value)   # 0: UVWPP chooses
+    model = spec.Uvw(BITS, fixed)
     checked, last, changed = 0, (0, 0, 0), -10
     for clock, (position, valid) in enumerate(motion(r, 60_000)):
         if r.random() < 0.0002:
@@ -42,7 +44,7 @@ async def equals_its_model_and_the_electrical_angle(dut):
         dut.position.value = position
         dut.valid.value = int(valid)
         dut.settings2.value = settings2
-        pairs = spec.pole_pairs(settings2)
+        pairs = spec.pole_pairs(settings2, fixed)
         _, _, caught_up = model.tracker.decide(position, valid)
         expected = model.clock(position, valid, settings2)
         await RisingEdge(dut.clk)
@@ -65,6 +67,7 @@ async def equals_its_model_and_the_electrical_angle(dut):
     dut._log.info("%d clocks checked against the electrical angle", checked)
 
 
+@pytest.mark.parametrize("pole_pairs", [0, 7])
 @pytest.mark.parametrize("simulator", SIMULATORS)
-def test_prenc_uvw(simulator):
-    run(__file__, TOPLEVEL, simulator, parameters={"B": BITS})
+def test_prenc_uvw(simulator, pole_pairs):
+    run(__file__, TOPLEVEL, simulator, parameters={"B": BITS, "POLE_PAIRS": pole_pairs})
