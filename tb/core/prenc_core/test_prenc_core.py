@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """prenc_core end to end: the virtual encoder drives the pins through every scenario
 of prenc.virtual.scenarios (start-up at rest and moving, both directions, reversals,
-acceleration, each fault of the datasheet alone and combined).
+acceleration, each fault of the datasheet alone and combined), at N = 6, 8, 10 and 16
+(the ULX3S's largest build).
 
 Two independent expectations, neither from the RTL:
 - the truth: whenever pos_valid is 1, pos_hyb (and pos_abs) equal the true
@@ -169,7 +170,7 @@ def core_parameters(n: int, filter_len: int, hypotheses: int = 1, conv_reg: int 
 
 
 @pytest.mark.parametrize("filter_len", [0, 2])
-@pytest.mark.parametrize("n", [6, 8, 10])
+@pytest.mark.parametrize("n", [6, 8, 10, 16])
 def test_prenc_core_verilator(n, filter_len):
     run(__file__, TOPLEVEL, "verilator", parameters=core_parameters(n, filter_len))
 
