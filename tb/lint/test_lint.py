@@ -108,7 +108,7 @@ def test_an_illegal_parameter_stops_elaboration_naming_it(top, name, value):
 # parameter (N + 2 + FINE_BITS bits, say) are right at their extremes, not only at the
 # defaults. A value whose other parameters' defaults do not fit it (N without its TAPS)
 # stops on their checks instead, which is what a user who sets it alone sees.
-RANGE_CHECK = re.compile(r'parameter (\w+) = %0d is out of range (-?\d+)\.\.(-?\d+)(?![\d^*])')
+RANGE_CHECK = re.compile(r'parameter (\w+) = %0d (?:is )?out of range (-?\d+)\.\.(-?\d+)(?![\d^*])')
 SWITCH_CHECK = re.compile(r'parameter (\w+) = %0d (?:must be|is not) 0 or 1"')
 
 
