@@ -83,23 +83,31 @@ module prenc_cal_lookup #(
     end
   endgenerate
 
-  // The reads: IDLE (a read of the quarter asked starts when the pair is not its own:
-  // c[q] asked of the memory), READ_LO (c[q] comes; c[q + 1] asked), READ_HI (c[q + 1]
-  // comes: the pair is loaded, unless the table was written since the read began).
-  localparam [1:0] IDLE = 2'd0, READ_LO = 2'd1, READ_HI = 2'd2;
+  // The reads. In IDLE the memory reads the quarter asked every clock, and the quarter
+  // is registered (asked_reg); the clock after, if the pair is not that quarter's (the
+  // comparison between registers, so that the quarter's own path from the core ends at
+  // a register and the memory's address), c[q] is there: it is kept, c[q + 1] is asked
+  // (GO), and in READ_HI it comes and the pair is loaded, unless the table was written
+  // since the quarter was asked. A read starts the clock after its quarter was asked,
+  // the pair is loaded two clocks after that: as the model's IDLE, READ_LO, READ_HI.
+  localparam [0:0] IDLE = 1'b0, READ_HI = 1'b1;
 
-  reg [1:0]    state_reg;
-  reg [QB-1:0] asked_reg;     // the quarter being read
+  reg          state_reg;
+  reg          asked_now_reg; // asked_reg was registered by the clock before (an IDLE
+                              // clock that did not go)
+  reg [QB-1:0] asked_reg;     // the quarter asked, then being read
   reg [15:0]   word_reg;      // the memory's read register
   reg [15:0]   lo_reg;        // c[q], until its pair is loaded
-  reg          dirty_reg;     // the table was written since the read began
+  reg          dirty_reg;     // the table was written since the quarter was asked
+  reg          ok_d_reg;      // ok_reg of the clock before
   reg [15:0]   c_lo_reg;      // the pair
   reg [15:0]   c_hi_reg;
   reg [QB-1:0] pair_reg;
   reg          ok_reg;
 
-  wire          start     = (state_reg == IDLE) && (!ok_reg || quarter != pair_reg);
-  wire [QB-1:0] read_addr = (state_reg == READ_LO) ? asked_reg + 1'b1 : quarter;
+  wire          go        = (state_reg == IDLE) && asked_now_reg &&
+                            (!ok_d_reg || asked_reg != pair_reg);
+  wire [QB-1:0] read_addr = go ? asked_reg + 1'b1 : quarter;
 
   always @(posedge clk) begin
     if (write) begin
@@ -109,33 +117,34 @@ module prenc_cal_lookup #(
   end
 
   always @(posedge clk) begin
-    case (state_reg)
-      IDLE: if (start) begin
-        asked_reg <= quarter;
-        dirty_reg <= 1'b0;
-        state_reg <= READ_LO;
-      end
-      READ_LO: begin
+    ok_d_reg      <= ok_reg;
+    asked_now_reg <= (state_reg == IDLE) && !go;
+    if (state_reg == IDLE) begin
+      if (go) begin
         lo_reg    <= word_reg;
         state_reg <= READ_HI;
+      end else begin
+        asked_reg <= quarter;
+        dirty_reg <= 1'b0;
       end
-      default: begin   // READ_HI
-        if (!dirty_reg) begin
-          c_lo_reg <= lo_reg;
-          c_hi_reg <= word_reg;
-          pair_reg <= asked_reg;
-          ok_reg   <= 1'b1;
-        end
-        state_reg <= IDLE;
+    end else begin   // READ_HI
+      if (!dirty_reg) begin
+        c_lo_reg <= lo_reg;
+        c_hi_reg <= word_reg;
+        pair_reg <= asked_reg;
+        ok_reg   <= 1'b1;
       end
-    endcase
+      state_reg <= IDLE;
+    end
     if (write) begin
       dirty_reg <= 1'b1;
       ok_reg    <= 1'b0;
     end
     if (rst) begin
-      state_reg <= IDLE;
-      ok_reg    <= 1'b0;
+      state_reg     <= IDLE;
+      asked_now_reg <= 1'b0;
+      ok_d_reg      <= 1'b0;
+      ok_reg        <= 1'b0;
     end
   end
 
