@@ -391,14 +391,23 @@ def board_build(board: Board, bits: int, out: Path, baud: int | None = None,
                      pins=board.folder / board.pins, seeds=tuple(seeds))
     except FlowError as err:
         if str(err).startswith("timing failed"):
-            raise FlowError(f"{err} ({timing_advice(board)})") from None
+            raise FlowError(f"{err} ({timing_advice(board, params)})") from None
         raise
 
 
-def timing_advice(board: Board) -> str:
+def top_defaults(board: Board) -> dict[str, int]:
+    """The board top's integer parameters' defaults, from its source."""
+    text = (board.folder / f"{board.top}.v").read_text()
+    return {k: int(v) for k, v in re.findall(r"parameter\s+integer\s+(\w+)\s*=\s*(\d+)\b", text)}
+
+
+def timing_advice(board: Board, params: dict[str, object] | None = None) -> str:
     """What to try when a board build misses its clock on every seed
-    (docs/guide/synthesis.md, "A build that misses its clock")."""
-    options = [f'PARAMS="{p}=0"' for p in ("ABI", "SPI", "UVW") if p in board_settable(board)]
+    (docs/guide/synthesis.md, "A build that misses its clock"): other seeds, and leaving
+    out a drive's output that this build has (its parameter 1 in `params`, or by default)."""
+    values = {**top_defaults(board), **(params or {})}
+    options = [f'PARAMS="{p}=0"' for p in ("ABI", "SPI", "UVW")
+               if p in board_settable(board) and int(values.get(p, 0)) == 1]
     leave_out = f", or leave out an output you do not use ({', '.join(options)})" if options else ""
     return f"a fuller device places worse: try other placer seeds, SEEDS=5,6,7,8{leave_out}; docs/guide/synthesis.md"
 
