@@ -79,10 +79,13 @@ class Draw:
     def encoder_run(self):
         """The pins: the optics' faults (misreads, a contaminated slot), then the sensors'
         noise on what the optics give, then the faults of the pins as the reader samples
-        them (glitches, bounce, a missed state: A and B seen changing on one clock)."""
+        them: bounce on the sensors' edges, then glitches (spikes on the line, which no
+        comparator bounces: bounce around a glitch's edges would make it longer than
+        FILTER, a transition), then a missed state (A and B seen changing on one clock)."""
         optical = [f for f in self.faults if isinstance(f, (RandomMisreads, ContaminatedSlot))]
         sampled = [f for f in self.faults if isinstance(f, MissedQuadratureState)]
-        pins = [f for f in self.faults if f not in optical and f not in sampled]
+        pins = sorted((f for f in self.faults if f not in optical and f not in sampled),
+                      key=lambda f: not isinstance(f, Bounce))
         disc = Disc(N, printing=self.printing)
         return VirtualEncoder(disc, [*optical, *self.sensors, *pins, *sampled]).run(self.theta, CLK_HZ)
 
