@@ -633,16 +633,16 @@ module prenc_board #(
 
   // The position as the AS5047P's outputs give it: at least 14 bits (the fine
   // position, or below N = 12 without prenc_fine pos_hyb and zeros).
-  // held_14 is prenc_turns' register (with SSI's and BiSS-C's position); next_14 the
-  // value it takes on the next clock, for the SPI, which registers it.
+  // held_14 is prenc_turns' register (with SSI's and BiSS-C's position); next_14 the top
+  // 14 bits of the value it takes on the next clock, for the SPI, which registers them.
   localparam integer SHAFT_BITS = (FULL_BITS >= 14) ? FULL_BITS : 14;
   wire [SHAFT_BITS-1:0] held_14;
-  wire [SHAFT_BITS-1:0] next_14;
+  wire [13:0]           next_14;
 
   generate
     if (FULL_BITS >= 14) begin : g_held_14
       assign held_14 = full_held;
-      assign next_14 = fine_full;
+      assign next_14 = fine_full[FULL_BITS-1:FULL_BITS-14];
     end else begin : g_held_14_padded
       assign held_14 = {full_held, {(14 - FULL_BITS){1'b0}}};
       assign next_14 = {fine_full, {(14 - FULL_BITS){1'b0}}};
@@ -664,7 +664,7 @@ module prenc_board #(
       ) u_spi (
         .clk       (clk),
         .rst       (rst),
-        .angle     (next_14[SHAFT_BITS-1:SHAFT_BITS-14]),
+        .angle     (next_14),
         .valid     (fine_valid),
         .warning   (warning),
         .csn       (spi_csn),

