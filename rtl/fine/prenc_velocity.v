@@ -149,6 +149,7 @@ module prenc_velocity #(
   reg               anch_reg;       // flags
   reg               have_reg;
   reg               bnd_reg;
+  reg               stale_reg;      // (a window has passed the test since a change)
   // The register file (block RAM). A program never reads a word as it is written
   // (prenc.fine.engine.check), so the block RAM needs no bypass for it (no_rw_check).
   (* no_rw_check *)
@@ -242,7 +243,9 @@ module prenc_velocity #(
       4'd6:    taken = anch_reg;
       4'd7:    taken = !anch_reg;
       4'd8:    taken = bnd_reg;
-      default: taken = !bnd_reg;
+      4'd9:    taken = !bnd_reg;
+      4'd10:   taken = stale_reg;
+      default: taken = !stale_reg;
     endcase
   end
 
@@ -326,8 +329,9 @@ module prenc_velocity #(
       OP_FLAG: begin
         case (a[1:0])
           2'd0:    anch_reg <= n[0];
-          2'd1:    have_reg <= n[0];
-          default: bnd_reg  <= n[0];
+          2'd1:    have_reg  <= n[0];
+          2'd2:    bnd_reg   <= n[0];
+          default: stale_reg <= n[0];
         endcase
       end
       default: ;
@@ -377,6 +381,7 @@ module prenc_velocity #(
       anch_reg  <= 1'b0;
       have_reg  <= 1'b0;
       bnd_reg   <= 1'b0;
+      stale_reg <= 1'b0;
       if (illegal) begin
         valid_reg <= 1'b0;
         pend_reg  <= 1'b0;
@@ -407,6 +412,7 @@ module prenc_velocity #(
       anch_reg     <= 1'b0;
       have_reg     <= 1'b0;
       bnd_reg      <= 1'b0;
+      stale_reg    <= 1'b0;
     end
   end
 

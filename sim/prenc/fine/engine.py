@@ -16,7 +16,8 @@ clocks as it has quotient bits). Registers:
           (or an abort, or a restart) must not read an operand (the model refuses such
           a program). DIV and MUL keep their operand (OP) from their first step.
     flags ANCH (the window has its anchor), HAVE (a speed and the last window are
-          known), BND (an overdue edge bounds the speed)
+          known), BND (an overdue edge bounds the speed), STALE (a window has passed
+          the constant-speed test since the speed last changed)
 
 Instructions (`op a n`): the operand is RF[a], or with `s` the hardware's value `a`
 (SPECIALS) as it was the clock before (it is registered with the read of RF).
@@ -47,10 +48,10 @@ WORD_MASK = (1 << WORD_BITS) - 1
 OPS = ("NOP", "LOAD", "ADD", "SUB", "HALF", "NUM", "DIV", "MUL", "QUOT", "STORE", "OUT", "FLAG",
        "DONE", "JMP", "WAIT")
 SPECIALS = ("NOW", "STIME", "SPOSC", "SPEED", "LTIME", "LWIDTH")   # operands besides the RF
-FLAGS = ("ANCH", "HAVE", "BND")
+FLAGS = ("ANCH", "HAVE", "BND", "STALE")
 OUT_KINDS = ("SPEED_A0", "SPEED", "ACCEL")   # speed, accel <- 0; speed; accel
 CONDITIONS = ("ALWAYS", "PEND", "NEG", "NOT_NEG", "HAVE", "NOT_HAVE", "ANCH", "NOT_ANCH",
-              "BND", "NOT_BND")
+              "BND", "NOT_BND", "STALE", "NOT_STALE")
 
 
 @dataclass(frozen=True)

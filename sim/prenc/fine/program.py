@@ -22,7 +22,11 @@ The estimator, in the engine's words (docs/fine.md):
     mean of the windows, so a steady speed reads the mean of many. With a table and
     EDGE_TOLERANCE (the edges' error is then the sensors' noise, new at every pass) the
     weight is 1/2^RUN_SHIFT_SETTLED once SETTLED windows in a row have passed without a
-    trend (more than TREND in a row on one side of S: a ripple, a slow ramp).
+    trend (more than TREND in a row on one side of S: a ripple, a slow ramp). The first
+    window that passes after the speed changed (a failed test) weighs 1/2: S <- (S +
+    V1) / 2. S after a change is one window's mean, or two's, off by up to the test's
+    bound; at 1/8 alone the speed took up to 11 windows to come within 0.05 % after a
+    ramp ended (the STALE flag: a window has passed since the change).
   - Failed, but the last two windows agree with each other within the same bound: the
     speed is constant again (an acceleration ended, or the last fit was off): S <- (V1 +
     V2) / 2, acceleration 0.
@@ -231,12 +235,14 @@ WRITTEN = [
     (None, "JMP", "NEG", "SETTLED"),       # (RUNS stays 0)
     ("COUNTED", "STORE", "RUNS"),
     (None, "LOAD", "T1"),                  # S + (V1 - S) / 2^RUN_SHIFT
+    (None, "JMP", "NOT_STALE", "FRESH"),   # (the first since a change: S + (V1 - S) / 2)
     (None, "HALF", RUN_SHIFT - 1),
     (None, "JMP", "ALWAYS", "MEAN"),
     ("TREND", "LOAD", "C_SETTLED"),
     (None, "JMP", "ALWAYS", "COUNTED"),
     ("SETTLED", "LOAD", "T1"),             # S + (V1 - S) / 2^RUN_SHIFT_SETTLED
     (None, "HALF", RUN_SHIFT_SETTLED - 1),
+    ("FRESH", "FLAG", "STALE", 1),         # (SETTLED: set already)
     ("MEAN", "ADD", "s.SPEED"),
     (None, "OUT", "SPEED_A0"),
     ("STEADY", "LOAD", "C_ZERO"),          # no run of changes
@@ -245,7 +251,8 @@ WRITTEN = [
     (None, "JMP", "ALWAYS", "NEXT"),
     # Failed: do the last two windows agree with each other (|V1 - V2| / 2 < T0)? Then
     # the speed is constant again: S <- (V1 + V2) / 2, acceleration 0. Else the fit.
-    ("AGREE", "LOAD", "C_SETTLED"),        # RUNS restarts
+    ("AGREE", "FLAG", "STALE", 0),         # the speed changes
+    (None, "LOAD", "C_SETTLED"),           # RUNS restarts
     (None, "STORE", "RUNS"),
     (None, "LOAD", "V1"),
     (None, "SUB", "V2"),
