@@ -184,19 +184,27 @@ def random_motion(seed: int) -> tuple[np.ndarray, list[tuple[int, int, int, floa
     return traj.theta, holds
 
 
-def test_the_velocity_is_never_frozen_by_random_changes_of_motion():
+@pytest.mark.parametrize("disc, seed, windows, periods", [("ideal", 41, 7, 8), ("calibrated", 30, 16, 22)])
+def test_the_velocity_is_never_frozen_by_random_changes_of_motion(disc, seed, windows, periods):
     # A property, over a random run of steps, ramps, stops, reversals and changes in
-    # quick succession: after each, the velocity is within 0.05 % within 7 windows or 8
-    # edge periods of the new speed (whichever is longer), and stays there until the
-    # next change; until then it reads between the last speeds widened by their spread,
-    # or 0. (Seed 41: before the first window after a change weighed 1/2, the speed
-    # after this run's first ramp took 8.2 windows.)
-    theta, holds = random_motion(41)
-    velocity = fb.run_fine(fb.sync_stream(theta, None))["velocity"]
+    # quick succession: after each, the velocity is within 0.05 % within the bound of
+    # docs/fine.md, `windows` windows or `periods` edge periods of the new speed
+    # (whichever is longer), and stays there until the next change; until then it reads
+    # between the last speeds widened by their spread, or 0. The calibrated printed disc
+    # takes longer: its test allows each edge the table's residual error, so a speed off
+    # by up to that (at the end of a ramp) passes it and is averaged out at 1/8 a window.
+    # (Seed 41, ideal: before the first window after a change weighed 1/2, the speed
+    # after this run's first ramp took 8.2 windows. Seed 30, calibrated: its second ramp
+    # takes 15.5 windows, the most of 40 runs.)
+    theta, holds = random_motion(seed)
+    if disc == "ideal":
+        velocity = fb.run_fine(fb.sync_stream(theta, None))["velocity"]
+    else:
+        velocity = fb.run_fine(fb.sync_stream(theta, fb.PRINTED), table=calibrated_table())["velocity"]
     truth = 4 * (theta[1:] - theta[:-1])
     for begin, hold, end, v, recent in holds:
         period = fb.CLK_HZ / (4 * abs(v))
-        settled = hold + int(max(7 * fb.WINDOW, 8 * period))
+        settled = hold + int(max(windows * fb.WINDOW, periods * period))
         assert settled < end - 1, (hold, v)
         err = np.abs(velocity[settled:end - 1] - truth[settled:end - 1]) / np.abs(truth[settled:end - 1])
         assert err.max() <= 0.0005, (hold, v, err.max())
