@@ -19,7 +19,8 @@
 #   make soak [ARGS="--bits 10 --filter 0 --seeds 1..500"]
 #                many random draws of the end-to-end scenarios through the reader
 #                model, as CI judges the RTL (scripts/soak.py --help);
-#                ARGS="--instrument --seeds 1..100": through the whole instrument
+#                ARGS="--instrument --seeds 1..100": through the whole instrument;
+#                ARGS="--velocity --seeds 1..40": the velocity's bound after changes of motion
 #   make litex-soc BOARD=sim|ulx3s|icebreaker
 #                the LiteX example: VexRiscv + prenc_wb + the firmware of sw/litex/, its
 #                Verilog for simulation, or a board's bitstream and its report

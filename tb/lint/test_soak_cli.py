@@ -24,6 +24,8 @@ from prenc.virtual.soak import SoakFailure, SoakResult  # noqa: E402
     (["--filter", "-1"], "--filter -1 is out of range"),
     (["--jobs", "0"], "--jobs 0 must be 1 or more"),
     (["--seeds", "1", "--scenario", "nope"], "unknown scenario nope"),
+    (["--velocity", "--instrument"], "two soaks: give one"),
+    (["--velocity", "--jobs", "0"], "--jobs 0 must be 1 or more"),
 ])
 def test_malformed_requests_exit_2_naming_the_option(argv, message, capsys):
     with pytest.raises(SystemExit) as stop:
@@ -49,3 +51,17 @@ def test_a_clean_draw_exits_0(capsys):
     assert soak_script.main(["--bits", "6", "--filter", "0", "--seeds", "1",
                              "--scenario", "start_at_rest_cw", "--jobs", "1"]) == 0
     assert "1 draws (1 seeds), 0 failed" in capsys.readouterr().out
+
+
+def test_a_failed_velocity_run_prints_its_seed_and_exits_1(monkeypatch, capsys):
+    from prenc.virtual import velocity_soak
+
+    def failing(seeds, jobs):
+        return [velocity_soak.VelocityResult(seeds[0], "ideal", 1000, ["ramp to 563 rpm at clock 9: 0.080 %"],
+                                             [("ramp", 9.9, 12.0)])]
+
+    monkeypatch.setattr(velocity_soak, "soak_velocity", failing)
+    assert soak_script.main(["--velocity", "--seeds", "4"]) == 1
+    out = capsys.readouterr().out
+    assert "seed 4, ideal disc" in out and "FAILED: ramp to 563 rpm" in out
+    assert "1 runs, 1 failed" in out
