@@ -124,20 +124,16 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.instrument and args.velocity:
         parser.error("--instrument and --velocity are two soaks: give one")
+    if args.jobs < 1:
+        parser.error(f"--jobs {args.jobs} must be 1 or more")
     if args.velocity:
-        if args.jobs < 1:
-            parser.error(f"--jobs {args.jobs} must be 1 or more")
         return velocity(args.seeds, args.jobs)
     if args.instrument:
-        if args.jobs < 1:
-            parser.error(f"--jobs {args.jobs} must be 1 or more")
         return instrument(args.seeds, args.jobs)
     if not 4 <= args.bits <= 16:
         parser.error(f"--bits {args.bits} is out of range 4..16")
     if not 0 <= args.filter <= 16:
         parser.error(f"--filter {args.filter} is out of range 0..16")
-    if args.jobs < 1:
-        parser.error(f"--jobs {args.jobs} must be 1 or more")
     start = time.monotonic()
     try:
         result = soak(args.bits, args.filter, args.seeds, args.scenario, not args.no_hypotheses, args.jobs)
