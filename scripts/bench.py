@@ -850,15 +850,18 @@ def fine_section(logic: bool = True) -> bool:
 
 
 def cell_counts(result, family: str) -> str:
-    """A Yosys result's LUTs, flip-flops and block RAMs (iCE40 or ECP5)."""
+    """A Yosys result's LUTs, flip-flops and block RAMs (iCE40 or ECP5), and its DSP
+    blocks where it has any."""
     c = result.cells
     if family == "ice40":
-        lut, ram = c.get("SB_LUT4", 0), c.get("SB_RAM40_4K", 0)
+        lut, ram, dsp = c.get("SB_LUT4", 0), c.get("SB_RAM40_4K", 0), ("SB_MAC16", c.get("SB_MAC16", 0))
         ff = sum(n for k, n in c.items() if k.startswith("SB_DFF"))
-        return f"{lut} LUT4, {ff} FF, {ram} SB_RAM40_4K"
-    lut, ram = c.get("LUT4", 0), c.get("DP16KD", 0)
-    ff = sum(n for k, n in c.items() if k.startswith("TRELLIS_FF"))
-    return f"{lut} LUT4, {ff} FF, {ram} DP16KD"
+        text = f"{lut} LUT4, {ff} FF, {ram} SB_RAM40_4K"
+    else:
+        lut, ram, dsp = c.get("LUT4", 0), c.get("DP16KD", 0), ("MULT18X18D", c.get("MULT18X18D", 0))
+        ff = sum(n for k, n in c.items() if k.startswith("TRELLIS_FF"))
+        text = f"{lut} LUT4, {ff} FF, {ram} DP16KD"
+    return text + (f", {dsp[1]} {dsp[0]}" if dsp[1] else "")
 
 
 def fine_logic_rows() -> list[str]:
@@ -884,6 +887,11 @@ def fine_logic_rows() -> list[str]:
             except RuntimeError as err:
                 cells.append(f"{label}: FAILED: {str(err).splitlines()[0]}")
         rows.append(f"{family}: " + "; ".join(cells))
+    # The HX parts have no DSP block: the fine position's multiplications in logic.
+    rows.append("ice40 without DSP blocks (HX): " + "; ".join(
+        f"{label}: {cell_counts(synthesize('prenc_fine', 'ice40', params, dsp=False), 'ice40')}"
+        for label, params in (("prenc_fine", {"N": 10, "FINE_BITS": 8, "LOOKAHEAD_HALVES": 25}),
+                              ("with CAL = 1", {"N": 10, "FINE_BITS": 8, "LOOKAHEAD_HALVES": 25, "CAL": 1}))))
     return rows
 
 

@@ -63,9 +63,10 @@ class Target:
 
 
 TARGETS = {
-    # -spram: single-port RAMs without initial contents may use the UP5K's four SPRAMs
+    # -spram: single-port RAMs without initial contents may use the UP5K's four SPRAMs;
+    # -dsp: multiplications (the ABI's and UVW's step tracker) into its SB_MAC16 blocks
     "ice40-up5k": Target("ice40", ("--up5k", "--package", "sg48"), "iCE40 UP5K (SG48)", "ICESTORM_RAM", "ICESTORM_LC",
-                         ("-spram",)),
+                         ("-spram", "-dsp")),
     "ice40-hx1k": Target("ice40", ("--hx1k", "--package", "tq144"), "iCE40 HX1K (TQ144)", "ICESTORM_RAM", "ICESTORM_LC"),
     "ice40-hx8k": Target("ice40", ("--hx8k", "--package", "ct256"), "iCE40 HX8K (CT256)", "ICESTORM_RAM", "ICESTORM_LC"),
     "ecp5-85k": Target("ecp5", ("--85k", "--package", "CABGA381"), "ECP5 LFE5U-85F (CABGA381)", "DP16KD", "TRELLIS_COMB"),

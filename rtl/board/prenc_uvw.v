@@ -12,12 +12,12 @@
 //   V   0 0 1 1 1 0          each 120 degrees after the one before
 //   W   1 0 0 0 1 1
 //
-// prenc_step_tracker follows the position sector by sector (one a clock at most), with
+// prenc_step_tracker follows the position sector by sector (one every 3 clocks at most), with
 // the hysteresis of HYS ((3 - HYS) LSB of the 14-bit angle, as prenc_abi). U = V = W =
 // 0, a pattern no Hall sensor makes, while the position is not valid and until the
 // sector has caught up with it after reset: from then on the outputs are the shaft's.
 //
-// Latency: U, V and W are registers, 2 clocks after the position crossed a sector's edge.
+// Latency: U, V and W are registers, 5 clocks after the position crossed a sector's edge.
 //
 // Parameters
 //   B            position bits, 14..30 (the turn is 2^B positions)
@@ -60,42 +60,24 @@ module prenc_uvw #(
 
   localparam integer SB = 8;   // 6 P <= 192 sectors
 
-  // floor(2^B / s) and 2^B mod s, at elaboration.
-  function [31:0] turn_div(input [31:0] s);
-    turn_div = (32'd1 << B) / s;
-  endfunction
-  function [31:0] turn_mod(input [31:0] s);
-    turn_mod = (32'd1 << B) % s;
-  endfunction
   localparam [31:0] FIXED = 6 * POLE_PAIRS;
 
-  // The sectors of a turn, 6 P, and q, r for the tracker: POLE_PAIRS's, or UVWPP's (the
-  // settings' choice, always computed, so that the block is combinational in every
-  // simulator whichever is used).
+  // The sectors of a turn, 6 P: POLE_PAIRS's, or UVWPP's.
   reg  [31:0] chosen_sectors;
-  reg  [31:0] chosen_q;
-  reg  [31:0] chosen_r;
   always @* begin
     case (settings2[2:0])
-      3'd0:    begin chosen_sectors = 6;  chosen_q = turn_div(6);  chosen_r = turn_mod(6);  end
-      3'd1:    begin chosen_sectors = 12; chosen_q = turn_div(12); chosen_r = turn_mod(12); end
-      3'd2:    begin chosen_sectors = 18; chosen_q = turn_div(18); chosen_r = turn_mod(18); end
-      3'd3:    begin chosen_sectors = 24; chosen_q = turn_div(24); chosen_r = turn_mod(24); end
-      3'd4:    begin chosen_sectors = 30; chosen_q = turn_div(30); chosen_r = turn_mod(30); end
-      3'd5:    begin chosen_sectors = 36; chosen_q = turn_div(36); chosen_r = turn_mod(36); end
-      3'd6:    begin chosen_sectors = 42; chosen_q = turn_div(42); chosen_r = turn_mod(42); end
-      default: begin   // 7, as 6
-        chosen_sectors = 42; chosen_q = turn_div(42); chosen_r = turn_mod(42);
-      end
+      3'd0:    chosen_sectors = 6;
+      3'd1:    chosen_sectors = 12;
+      3'd2:    chosen_sectors = 18;
+      3'd3:    chosen_sectors = 24;
+      3'd4:    chosen_sectors = 30;
+      3'd5:    chosen_sectors = 36;
+      default: chosen_sectors = 42;   // 6 and 7: 7 pole pairs
     endcase
   end
-  localparam [31:0] FIXED_Q = (POLE_PAIRS != 0) ? turn_div(FIXED) : 32'd0;
-  localparam [31:0] FIXED_R = (POLE_PAIRS != 0) ? turn_mod(FIXED) : 32'd0;
   wire [31:0] sectors_32 = (POLE_PAIRS != 0) ? FIXED : chosen_sectors;
-  wire [31:0] q_32       = (POLE_PAIRS != 0) ? FIXED_Q : chosen_q;
-  wire [31:0] r_32       = (POLE_PAIRS != 0) ? FIXED_R : chosen_r;
-  // The hysteresis: (3 - HYS) LSB of 14 bits, as prenc_abi's.
-  wire [B-1:0]  hysteresis = {{(B - 2){1'b0}}, 2'd3 - settings2[4:3]} << (B - 14);
+  // The hysteresis: (3 - HYS) LSB of 14 bits, in 2^-16 turn, as prenc_abi's.
+  wire [15:0]   hysteresis = {12'd0, 2'd3 - settings2[4:3], 2'b00};
   wire          restart;   // the tracker starts again at sector 0 (after reset, a new P)
   wire [SB-1:0] count;
   wire          step;
@@ -104,17 +86,15 @@ module prenc_uvw #(
 
   prenc_step_tracker #(
     .B          (B),
-    .STEPS_BITS (SB)
+    .STEPS_BITS (SB),
+    .MIN_GAP    (1)
   ) u_sectors (
     .clk        (clk),
     .rst        (rst),
     .position   (position),
     .valid      (valid),
     .steps      (sectors_32[SB-1:0]),
-    .q          (q_32[B-1:0]),
-    .r          (r_32[SB-1:0]),
     .hysteresis (hysteresis),
-    .min_gap    (16'd1),
     .restart    (restart),
     .count      (count),
     .step       (step),
@@ -160,7 +140,7 @@ module prenc_uvw #(
   assign v = uvw[1];
   assign w = uvw[0];
 
-  wire unused_ok = &{1'b0, count, settings2[7:5], sectors_32[31:SB], q_32[31:B], r_32[31:SB]};
+  wire unused_ok = &{1'b0, count, settings2[7:5], sectors_32[31:SB]};
 
 endmodule
 

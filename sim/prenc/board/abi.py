@@ -27,9 +27,9 @@ def pole_pairs(settings2: int, fixed: int = 0) -> int:
     return fixed or min(7, (settings2 & 7) + 1)
 
 
-def hysteresis(settings2: int, bits: int) -> int:
-    """(3 - HYS) LSB of the 14-bit angle, in 2^-bits turn."""
-    return (3 - (settings2 >> 3 & 3)) << (bits - 14)
+def hysteresis(settings2: int) -> int:
+    """(3 - HYS) LSB of the 14-bit angle, in 2^-16 turn."""
+    return (3 - (settings2 >> 3 & 3)) << 2
 
 
 def quadrature(count: int) -> tuple[int, int]:
@@ -37,67 +37,68 @@ def quadrature(count: int) -> tuple[int, int]:
     return (count >> 1 ^ count) & 1, count >> 1 & 1
 
 
+def step_of(p16: int, steps: int) -> int:
+    """The step a 16-bit position is in: floor(p S / 2^16)."""
+    return p16 * steps >> 16
+
+
 @dataclass
 class StepTracker:
-    """prenc_step_tracker: the step of `bits`-bit positions in a turn of `steps` steps,
-    with its registers: the settings (S, the hysteresis; a new S or the reset restarts it
-    on the next clock), the edges, their remainders and the thresholds."""
+    """prenc_step_tracker: the step of `bits`-bit positions (taken at their top 16 bits)
+    in a turn of `steps` steps, with its registers: the settings (S, the hysteresis; a
+    new S or the reset restarts it on the next clock), the thresholds' steps of the clock
+    before (k_up, k_down, with `valid`), the directions those wanted against the count
+    (want_up, want_down, with `valid` again), the count and the last step's direction."""
 
     bits: int
     steps: int | None = None      # the registered S (None: the reset's clocks load it)
     hyst: int = 0
     restart: bool = True          # after the reset
     count: int = 0
-    lower: int = 0
-    upper: int = 0
-    rem_lower: int = 0
-    rem_upper: int = 0
-    up_at: int = 0
-    down_at: int = 0
+    last: int = 0                 # +1 the last step was up, -1 down, 0 none since a restart
+    k_up: int = 0
+    k_down: int = 0
+    valid: bool = False           # the registered valid, of k_up and k_down's position
+    want_up: bool = False
+    want_down: bool = False
+    valid2: bool = False          # valid, registered again: of want_up and want_down
     wait_left: int = 0
     step: bool = False
     up: bool = False
 
-    def decide(self, position: int, valid: bool) -> tuple[bool, bool, bool]:
-        """(step up, step down, caught up) on this clock, before it (combinational)."""
-        turn = 1 << self.bits
-        want_up = (position - self.up_at) % turn < turn // 2
-        want_down = (position - self.down_at) % turn >= turn // 2
-        may = valid and self.wait_left == 0
-        return may and want_up, may and want_down and not want_up, valid and not want_up and not want_down
+    def p16(self, position: int) -> int:
+        return position >> (self.bits - 16) if self.bits >= 16 else position << (16 - self.bits)
+
+    def decide(self) -> tuple[bool, bool, bool]:
+        """(step up, step down, caught up) on this clock, from the registers."""
+        may = self.valid2 and self.wait_left == 0
+        return (may and self.want_up, may and self.want_down and not self.want_up,
+                self.valid2 and not self.want_up and not self.want_down)
 
     def clock(self, position: int, valid: bool, steps: int, hyst: int, min_gap: int) -> None:
         """A clock with the settings `steps` and `hyst` at the inputs."""
         if self.steps is None:
             self.steps, self.hyst = steps, hyst
-        turn = 1 << self.bits
         s = self.steps
-        q, r = divmod(turn, s)
-        step_up, step_down, _ = self.decide(position, valid)
+        step_up, step_down, _ = self.decide()
+        d, e = self.k_up - self.count, self.count - self.k_down   # the shorter way round
+        self.want_up = 0 < 2 * d < s or 2 * d < -s
+        self.want_down = 0 < 2 * e <= s or 2 * e <= -s
+        self.valid2 = self.valid
+        p = self.p16(position)
+        self.k_up = step_of((p - (self.hyst if self.last < 0 else 0)) % (1 << 16), s)
+        self.k_down = step_of((p + (self.hyst if self.last > 0 else 0)) % (1 << 16), s)
+        self.valid = valid
         self.step, self.up = step_up or step_down, step_up
         if self.wait_left:
             self.wait_left -= 1
-        if step_up:
-            carry = self.rem_upper + r >= s
-            above = (self.upper + q + carry) % turn
-            self.count = 0 if self.count == s - 1 else self.count + 1
-            self.down_at = (self.upper - self.hyst) % turn
-            self.lower, self.rem_lower = self.upper, self.rem_upper
-            self.upper, self.rem_upper = above, self.rem_upper + r - (s if carry else 0)
-            self.up_at = above
-            self.wait_left = min_gap - 1
-        elif step_down:
-            borrow = self.rem_lower < r
-            below = (self.lower - q - borrow) % turn
-            self.count = s - 1 if self.count == 0 else self.count - 1
-            self.up_at = (self.lower + self.hyst) % turn
-            self.upper, self.rem_upper = self.lower, self.rem_lower
-            self.lower, self.rem_lower = below, self.rem_lower + (s if borrow else 0) - r
-            self.down_at = below
-            self.wait_left = min_gap - 1
+        if step_up or step_down:
+            self.count = (self.count + (1 if step_up else -1)) % s
+            self.last = 1 if step_up else -1
+            self.wait_left = max(min_gap, 3) - 1
         if self.restart:
-            self.count = self.lower = self.rem_lower = self.down_at = self.wait_left = 0
-            self.upper, self.rem_upper, self.up_at = q, r, q
+            self.count = self.last = self.wait_left = 0
+            self.valid = self.valid2 = False   # the stages' steps are of the old S and direction
             self.step = self.up = False
         self.restart = steps != self.steps
         self.steps, self.hyst = steps, hyst
@@ -114,13 +115,13 @@ class Abi:
 
     def clock(self, position: int, valid: bool, settings1: int, settings2: int) -> tuple[int, int, int]:
         restart = self.tracker.restart
-        _, _, caught_up = self.tracker.decide(position, valid)
+        _, _, caught_up = self.tracker.decide()
         count = self.tracker.count
         self.a, self.b = quadrature(count)
         self.i = int(self.placed and count == 0)
         self.placed = self.placed or caught_up
         self.tracker.clock(position, valid, abi_steps(settings1, settings2, self.fixed),
-                           hysteresis(settings2, self.bits), self.min_gap)
+                           hysteresis(settings2), self.min_gap)
         if restart:
             self.placed = False
             self.a = self.b = self.i = 0
@@ -139,7 +140,7 @@ class Uvw:
 
     def clock(self, position: int, valid: bool, settings2: int) -> tuple[int, int, int]:
         restart = self.tracker.restart
-        _, _, caught_up = self.tracker.decide(position, valid)
+        _, _, caught_up = self.tracker.decide()
         if not valid:
             self.uvw = (0, 0, 0)
         elif self.placed:
@@ -148,7 +149,7 @@ class Uvw:
             self.sector = (self.sector + (1 if self.tracker.up else -1)) % 6
         self.placed = self.placed or caught_up
         self.tracker.clock(position, valid, 6 * pole_pairs(settings2, self.fixed),
-                           hysteresis(settings2, self.bits), 1)
+                           hysteresis(settings2), 1)
         if restart:
             self.sector, self.placed, self.uvw = 0, False, (0, 0, 0)
         return self.uvw

@@ -37,6 +37,7 @@ async def equals_its_model_and_the_electrical_angle(dut):
     fixed = int(dut.POLE_PAIRS.value)   # 0: UVWPP chooses
     model = spec.Uvw(BITS, fixed)
     checked, last, changed = 0, (0, 0, 0), -10
+    seen = [0, 0]   # the positions 2 clocks and 1 before: caught_up is of the first
     for clock, (position, valid) in enumerate(motion(r, 60_000)):
         if r.random() < 0.0002:
             settings2 = r.randrange(256)
@@ -45,7 +46,7 @@ async def equals_its_model_and_the_electrical_angle(dut):
         dut.valid.value = int(valid)
         dut.settings2.value = settings2
         pairs = spec.pole_pairs(settings2, fixed)
-        _, _, caught_up = model.tracker.decide(position, valid)
+        _, _, caught_up = model.tracker.decide()   # of the position 2 clocks before
         expected = model.clock(position, valid, settings2)
         await RisingEdge(dut.clk)
         await ReadOnly()
@@ -57,11 +58,12 @@ async def equals_its_model_and_the_electrical_angle(dut):
         if got != (0, 0, 0) and last != (0, 0, 0):
             assert sum(x != y for x, y in zip(got, last)) <= 1, (clock, last, got)
         if caught_up and model.placed and got != (0, 0, 0) and clock > changed + 3:
-            sector = position * 6 * pairs // TURN % 6
+            sector = seen[0] * 6 * pairs // TURN % 6
             near = {spec.UVW_PATTERN[(sector + d) % 6] for d in (-1, 0, 1)}
             assert got in near, (clock, got, sector)
             checked += 1
         last = got
+        seen = [seen[1], position]
         await FallingEdge(dut.clk)
     assert checked > 2_000, checked
     dut._log.info("%d clocks checked against the electrical angle", checked)
