@@ -99,9 +99,13 @@ def sync_stream(theta: np.ndarray, printing: Printing | None, n: int = N, sensor
     d = DECODER_DELAY
     step[d:] = (move[:-d] != 0)
     cw[d:] = (move[:-d] >= 0)
-    # pos_hyb: the sync track's hybrid position, counted from the first sample.
+    # pos_hyb: the sync track's hybrid position, counted from the first sample: the
+    # quarter whose state A and B show, the one nearest the angle seen (on a printed
+    # disc the edges are off their places: within a few hundredths of a slot of a slot's
+    # end, A and B may show the next slot's first quarter or the last one's).
     seen0 = theta[0] if printing is None else printing.seen(theta[:1], disc.length)[0]
-    h0 = 4 * int(math.floor(seen0)) + int(q[0])
+    quarter0 = int(math.floor(4 * seen0))
+    h0 = quarter0 + (int(q[0]) - quarter0 + 2) % 4 - 2
     h = h0 + np.cumsum(move)
     pos = np.full(len(theta), h0, dtype=np.int64)
     pos[d + POSITION_DELAY:] = h[:-(d + POSITION_DELAY)]
