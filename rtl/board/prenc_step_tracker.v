@@ -89,15 +89,8 @@ module prenc_step_tracker #(
   localparam integer SB = STEPS_BITS;
 
   // The clocks a step waits after the one before, less one, and the bits that count them.
-  function integer bits_of(input integer value);
-    integer v;
-    begin
-      bits_of = 1;
-      for (v = value; v > 1; v = v / 2) bits_of = bits_of + 1;
-    end
-  endfunction
   localparam integer GAP_LEFT = (MIN_GAP < 3) ? 2 : MIN_GAP - 1;
-  localparam integer WB       = bits_of(GAP_LEFT);
+  localparam integer WB       = $clog2(GAP_LEFT + 1);
   localparam [31:0]  GAP_32   = GAP_LEFT;
   localparam [WB-1:0] GAP     = GAP_32[WB-1:0];
 
