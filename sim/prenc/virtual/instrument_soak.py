@@ -21,7 +21,9 @@ A draw (`draw(seed)`), N = 10 at 30 MHz, FILTER = 2:
 What is judged, on every clock:
 
 1. the position: no wrong valid position against the true angle (prenc.virtual.scenarios'
-   judge, as every other test of the core);
+   judge, as every other test of the core), or against the quarter the sensors show
+   where their noise alone moved an edge (`seen_by_sensors`: a reader can only follow
+   its sensors);
 2. the fine position: while it is valid, within the documented bound of the core's
    quarter (docs/fine.md): in pos_hyb's quarter (of the last 8 clocks: the fine
    pipeline's delay), extended by the extrapolation, |velocity| x LOOKAHEAD_HALVES / 2
@@ -53,7 +55,7 @@ from .encoder import Disc, VirtualEncoder
 from .faults import Bounce, ContaminatedSlot, MissedQuadratureState, RandomGlitches, RandomMisreads
 from .fine_bench import LOOKAHEAD_HALVES, V_FRAC
 from .printing import Printing
-from .scenarios import core_latency, judge
+from .scenarios import core_latency, judge, seen_by_sensors
 from .sensors import CrossingJitter, EdgeDelay
 
 N, CLK_HZ, FILTER, FINE_BITS, WINDOW = 10, 30_000_000, 2, 8, 1024
@@ -78,16 +80,23 @@ class Draw:
 
     def encoder_run(self):
         """The pins: the optics' faults (misreads, a contaminated slot), then the sensors'
-        noise on what the optics give, then the faults of the pins as the reader samples
-        them: bounce on the sensors' edges, then glitches (spikes on the line, which no
-        comparator bounces: bounce around a glitch's edges would make it longer than
-        FILTER, a transition), then a missed state (A and B seen changing on one clock)."""
+        noise on what the optics give, then a missed state (two of the sensors' edges, A's
+        and B's, seen on one clock), then the faults of the line: bounce on its edges, then
+        glitches (spikes, which no comparator bounces: bounce around a glitch's edges
+        would make it longer than FILTER, a transition). A missed state takes the sensors'
+        edges, not a glitch's: held back until B's or A's next edge, a glitch's end would
+        make the glitch thousands of clocks long, a quarter the disc never showed."""
         optical = [f for f in self.faults if isinstance(f, (RandomMisreads, ContaminatedSlot))]
         sampled = [f for f in self.faults if isinstance(f, MissedQuadratureState)]
         pins = sorted((f for f in self.faults if f not in optical and f not in sampled),
                       key=lambda f: not isinstance(f, Bounce))
         disc = Disc(N, printing=self.printing)
-        return VirtualEncoder(disc, [*optical, *self.sensors, *pins, *sampled]).run(self.theta, CLK_HZ)
+        return VirtualEncoder(disc, [*optical, *self.sensors, *sampled, *pins]).run(self.theta, CLK_HZ)
+
+    def sensed(self) -> tuple[np.ndarray, np.ndarray]:
+        """The disc's A and B through the sensors' noise alone, without any fault."""
+        run = VirtualEncoder(Disc(N, printing=self.printing), list(self.sensors)).run(self.theta, CLK_HZ)
+        return run.a, run.b
 
     def truth(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The disc's own A, B and hybrid position at each clock, without faults or noise:
@@ -167,7 +176,9 @@ def judge_position(d: Draw, enc, valid: np.ndarray, hyb: np.ndarray, mode: np.nd
     """(wrong valid clocks, the first) against the disc's own position (Draw.truth), as
     prenc.virtual.scenarios.judge does every test of the core."""
     a, b, truth = d.truth()
-    verdict = judge(enc, valid, hyb, mode, core_latency(FILTER), filter_len=FILTER, truth=truth, clean=(a, b))
+    seen = seen_by_sensors(truth, (a, b), d.sensed(), 1 << N)
+    verdict = judge(enc, valid, hyb, mode, core_latency(FILTER), filter_len=FILTER, truth=truth, clean=(a, b),
+                    seen=seen)
     return verdict.wrong, verdict.first_wrong
 
 

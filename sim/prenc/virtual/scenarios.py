@@ -169,10 +169,13 @@ class Verdict:
 
 def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndarray,
           latency: int, tolerance: int | None = None, filter_len: int = 0,
-          truth: np.ndarray | None = None, clean: tuple[np.ndarray, np.ndarray] | None = None) -> Verdict:
+          truth: np.ndarray | None = None, clean: tuple[np.ndarray, np.ndarray] | None = None,
+          seen: np.ndarray | None = None) -> Verdict:
     """Compare per-clock outputs (index = clock) with the truth of the run: the ideal
     disc's hybrid position, or `truth` with the disc's own clean A and B (`clean`: a
-    printed disc's quarters are its printed edges)."""
+    printed disc's quarters are its printed edges). `seen`: a second position accepted
+    as well, clock for clock, within the same tolerance: the quarter the sensors show
+    where their noise moved an edge (`seen_by_sensors`)."""
     tol = (sync_tolerance(enc, filter_len, clean) if tolerance is None else tolerance) + filter_len
     valid = np.asarray(valid).astype(bool)
     pos_hyb = np.asarray(pos_hyb, dtype=np.int64)
@@ -183,6 +186,8 @@ def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndar
     for d in range(-tol, tol + 1):
         j = np.clip(idx + d, 0, len(truth) - 1)
         ok |= truth[j] == pos_hyb
+        if seen is not None:
+            ok |= seen[j] == pos_hyb
     bad = valid & ~ok & (idx >= 0)
     wrong = int(bad.sum())
     first_valid = int(np.argmax(valid)) if valid.any() else None
@@ -190,6 +195,25 @@ def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndar
     modes = {m.name: float(np.mean(np.asarray(mode) == int(m))) for m in Mode}
     return Verdict(clocks, wrong, int(np.argmax(bad)) if wrong else None,
                    float(after.mean()) if len(after) else 0.0, first_valid, modes)
+
+
+def quarter_state(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The quarter of a slot (0 to 3) that A and B show: (0, 1), (0, 0), (1, 0), (1, 1)."""
+    return np.select([(a == 0) & (b == 1), (a == 0) & (b == 0), (a == 1) & (b == 0)], [0, 1, 2], 3)
+
+
+def seen_by_sensors(truth: np.ndarray, clean: tuple[np.ndarray, np.ndarray],
+                    sensed: tuple[np.ndarray, np.ndarray], length: int) -> np.ndarray:
+    """The position the sensors show, clock for clock: `truth` moved by the quarters that
+    the sensors' A and B (`sensed`: the disc's signals through the sensors' noise alone,
+    no fault) differ from the disc's own (`clean`), -1, 0 or +1. A reader can only follow
+    its sensors: where a crossing's noise moves an edge, the quarter it shows until the
+    edge comes is the sensors', not a fault of the reader. (Two passes of one edge, each
+    with its own noise, can move the quarter's end further than any one stretch of the
+    signals' difference, which is what `sync_tolerance` measures.)"""
+    delta = (quarter_state(*sensed) - quarter_state(*clean)) % 4
+    delta = np.where(delta == 3, -1, np.where(delta == 1, 1, 0))
+    return (truth + delta) % (4 * length)
 
 
 def judge_outputs(enc: EncoderRun, outs: Sequence, latency: int, filter_len: int = 0) -> Verdict:

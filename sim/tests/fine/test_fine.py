@@ -158,7 +158,7 @@ def test_the_velocity_is_never_frozen_by_random_changes_of_motion(disc, seed, ki
     # change; until then it reads between the last speeds widened by their spread, or 0.
     # The calibrated printed disc takes longer: its test allows each edge the table's
     # residual error, so a speed off by up to that (at the end of a ramp) passes it and
-    # is averaged out at 1/8 a window. The seeds are the slowest of 230 runs: 113, ideal,
+    # is averaged out at 1/8 a window. The seeds are the slowest of 290 runs: 113, ideal,
     # its first ramp's end takes 9.07 windows (9.4 edge periods); 196, ideal, its second
     # step 9.90 windows (9.6 periods), 0.99 of the bound; 104, calibrated, its second
     # ramp's end 17.05 windows.

@@ -12,8 +12,11 @@ from prenc.virtual.instrument_soak import LOOKAHEAD_HALVES, draw, run_draw
 
 def test_the_draws_ci_affords_pass():
     # A missed state with glitches; a printed disc with bounce; glitches and bounce on B
-    # (bounce once made a glitch 3 clocks long: a transition, not a glitch).
-    for seed in (1, 4, 5107):
+    # (bounce once made a glitch 3 clocks long: a transition, not a glitch); a missed
+    # state that once held a glitch's end back 6,548 clocks (a quarter the disc never
+    # showed); two passes of one B edge, each with its own noise, the second 118 clocks
+    # late (the sensors' quarter, accepted).
+    for seed in (1, 4, 5107, 5509, 5552):
         result = run_draw(seed)
         assert result.failures == [], (seed, result.label, result.failures[:3])
         assert result.wrong == 0 and result.fine_rms < 0.3

@@ -14,7 +14,8 @@ from prenc.codes.debruijn import Code
 from prenc.core.reader import Reader
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.faults import Glitch
-from prenc.virtual.scenarios import core_latency, judge, judge_outputs, scenarios, sync_tolerance
+from prenc.virtual.scenarios import (core_latency, judge, judge_outputs, quarter_state, scenarios,
+                                     seen_by_sensors, sync_tolerance)
 from prenc.virtual.trajectory import Trajectory
 
 N = 6
@@ -60,6 +61,31 @@ def test_judge_rejects_a_position_held_past_the_tolerance():
     late = np.concatenate([np.full(lat + 3, truth[0]), truth[:-(lat + 3)]])
     assert judge(enc, valid, late, mode, lat, tolerance=0, filter_len=2).wrong > 0
     assert judge(enc, valid, late, mode, lat, tolerance=1, filter_len=2).wrong == 0
+
+
+def test_the_quarter_the_sensors_show_is_accepted_and_no_other():
+    """Where the sensors' noise holds B's edge back (the disc at quarter 5, the sensors
+    still at 4), the sensors' quarter is accepted clock for clock; a quarter neither the
+    disc nor the sensors show is wrong, and so is the sensors' quarter once they agree
+    with the disc again."""
+    clean_b = np.array([0, 0, 0, 1, 1, 1, 1, 1])            # the disc: B rises at clock 3
+    sensed_b = np.array([0, 0, 0, 0, 0, 0, 1, 1])           # the sensors: at clock 6
+    a = np.ones(8, dtype=np.int64)
+    assert list(quarter_state(a, clean_b)) == [2, 2, 2, 3, 3, 3, 3, 3]
+    truth = np.array([6, 6, 6, 7, 7, 7, 7, 7])
+    seen = seen_by_sensors(truth, (a, clean_b), (a, sensed_b), 2)
+    assert list(seen) == [6, 6, 6, 6, 6, 6, 7, 7]
+    enc = VirtualEncoder(Disc(N)).run(clean_run())
+    k = 8
+    mode = np.zeros(k, dtype=np.int64)
+    valid = np.ones(k, dtype=np.int64)
+    follows = np.array([6, 6, 6, 6, 6, 6, 7, 7])
+    assert judge(enc, valid, follows, mode, 0, tolerance=0, truth=truth, seen=seen).wrong == 0
+    assert judge(enc, valid, follows, mode, 0, tolerance=0, truth=truth).wrong == 3
+    other = np.array([6, 6, 6, 5, 7, 7, 7, 7])              # a quarter nobody showed
+    assert judge(enc, valid, other, mode, 0, tolerance=0, truth=truth, seen=seen).wrong == 1
+    stuck = np.array([6, 6, 6, 6, 6, 6, 6, 6])              # still 6 once the sensors say 7
+    assert judge(enc, valid, stuck, mode, 0, tolerance=0, truth=truth, seen=seen).wrong == 2
 
 
 def test_glitch_chatter_draw_of_ci_is_right():
