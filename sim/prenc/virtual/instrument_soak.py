@@ -80,18 +80,19 @@ class Draw:
 
     def encoder_run(self):
         """The pins: the optics' faults (misreads, a contaminated slot), then the sensors'
-        noise on what the optics give, then a missed state (two of the sensors' edges, A's
-        and B's, seen on one clock), then the faults of the line: bounce on its edges, then
-        glitches (spikes, which no comparator bounces: bounce around a glitch's edges
-        would make it longer than FILTER, a transition). A missed state takes the sensors'
-        edges, not a glitch's: held back until B's or A's next edge, a glitch's end would
-        make the glitch thousands of clocks long, a quarter the disc never showed."""
+        noise on what the optics give, then the faults of the pins as the reader samples
+        them: bounce on the sensors' edges, then a missed state (A and B seen changing on
+        one clock), then glitches (spikes on the line, which no comparator bounces: bounce
+        around a glitch's edges would make it longer than FILTER, a transition). A missed
+        state takes the sensors' edges, not a glitch's: held back until the other
+        signal's next edge, a glitch's end would make the glitch thousands of clocks long,
+        a quarter the disc never showed."""
         optical = [f for f in self.faults if isinstance(f, (RandomMisreads, ContaminatedSlot))]
         sampled = [f for f in self.faults if isinstance(f, MissedQuadratureState)]
-        pins = sorted((f for f in self.faults if f not in optical and f not in sampled),
-                      key=lambda f: not isinstance(f, Bounce))
+        bounce = [f for f in self.faults if isinstance(f, Bounce)]
+        spikes = [f for f in self.faults if f not in optical and f not in sampled and f not in bounce]
         disc = Disc(N, printing=self.printing)
-        return VirtualEncoder(disc, [*optical, *self.sensors, *sampled, *pins]).run(self.theta, CLK_HZ)
+        return VirtualEncoder(disc, [*optical, *self.sensors, *bounce, *sampled, *spikes]).run(self.theta, CLK_HZ)
 
     def sensed(self) -> tuple[np.ndarray, np.ndarray]:
         """The disc's A and B through the sensors' noise alone, without any fault."""
