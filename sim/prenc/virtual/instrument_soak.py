@@ -55,7 +55,7 @@ from .encoder import Disc, VirtualEncoder
 from .faults import Bounce, ContaminatedSlot, MissedQuadratureState, RandomGlitches, RandomMisreads
 from .fine_bench import LOOKAHEAD_HALVES, V_FRAC
 from .printing import Printing
-from .scenarios import core_latency, judge, seen_by_sensors
+from .scenarios import core_latency, judge, quarter_state, seen_by_sensors
 from .sensors import CrossingJitter, EdgeDelay
 
 N, CLK_HZ, FILTER, FINE_BITS, WINDOW = 10, 30_000_000, 2, 8, 1024
@@ -108,7 +108,7 @@ class Draw:
         a, b = clean["a"], clean["b"]
         if self.printing is None:
             return a, b, disc.hybrid(self.theta)
-        q = np.select([(a == 0) & (b == 1), (a == 0) & (b == 0), (a == 1) & (b == 0)], [0, 1, 2], 3)
+        q = quarter_state(a, b)
         seen = 4 * self.printing.seen(self.theta, disc.length, head=1) - 0.5
         h = np.round((seen - q) / 4).astype(np.int64) * 4 + q
         return a, b, h % (4 * disc.length)
