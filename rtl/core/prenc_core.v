@@ -24,7 +24,9 @@
 //   TAPS         feedback set as a mask, bit t-1 per tap t (default disc: 32'h204)
 //   SHIFT        track 2 phase shift D; must be 2^(N-1) + N - 1, which puts head 2 on
 //                the last bit of W(p) (the only geometry this reader decodes)
-//   FILTER       glitch filter length in clocks, 0 (off)..65535
+//   FILTER       glitch filter length in clocks, 0 (off)..65535; A and B are filtered as
+//                one state, so that changes of both fewer than FILTER clocks apart are a
+//                missed state in either order (a state must last FILTER clocks)
 //   ROM_FILE     conversion table from `prenc rom --bits N --taps ... --format hex`
 //   COUNT_WIDTH  incremental count width, 2..64
 //   ERROR_WIDTH  error counter widths, 1..32
@@ -140,7 +142,8 @@ module prenc_core #(
 
   prenc_input_conditioner #(
     .WIDTH  (4),
-    .FILTER (FILTER)
+    .FILTER (FILTER),
+    .PAIRED (1)        // A and B as one state: changes closer than FILTER are a missed state
   ) u_input_conditioner (
     .clk      (clk),
     .rst      (rst),

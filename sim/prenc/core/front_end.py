@@ -39,7 +39,7 @@ class FrontEnd:
     _clean: list[int] = field(default_factory=lambda: [0, 0, 0, 1], init=False, repr=False)
 
     def __post_init__(self) -> None:
-        self.conditioner = InputConditioner(4, self.filter_len)
+        self.conditioner = InputConditioner(4, self.filter_len, paired=True)
         self.quadrature = QuadratureDecoder()
         self.sampler = Sampler()
 

@@ -76,7 +76,7 @@ class Reader:
         self.code = code
         self.n = code.n
         self.mask = code.mask
-        self.conditioner = InputConditioner(4, filter_len)
+        self.conditioner = InputConditioner(4, filter_len, paired=True)
         self.quadrature = QuadratureDecoder()
         # The landing reading serves the hypotheses; the step comes with the heads' sample.
         self.sampler = Sampler(jump=hypotheses, head_delay=False)
@@ -157,7 +157,7 @@ def events_from_run(enc: EncoderRun, filter_len: int = 0, reset_clocks: int = 4,
     Each step carries the heads as the sampler takes them (the conditioned heads the
     decoder's step was made from) and the clock of the decoder's output. `tail`
     more clocks hold the last input levels."""
-    cond = InputConditioner(4, filter_len)
+    cond = InputConditioner(4, filter_len, paired=True)
     quad = QuadratureDecoder()
     clean_before = [0, 0, 0, 1]
     events: list[Step | Illegal] = []

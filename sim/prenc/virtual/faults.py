@@ -242,16 +242,19 @@ class MissedQuadratureState:
     holds the first edge back until the second, so the state between them never
     shows. `index` picks the k-th such transition; otherwise `count` are drawn
     at random with `seed`. `skip`: the clocks of first edges left alone among those
-    drawn (the same draw without some of its missed states).
+    drawn (the same draw without some of its missed states). `skew`: the two changes
+    reach the pins up to that many clocks apart, in either order, drawn for each
+    (two synchronizers resolve one change of both a clock apart, either way round).
     """
 
     index: int | None = None
     count: int = 1
     seed: int = 0
     skip: frozenset[int] = frozenset()
+    skew: int = 0
 
     def __post_init__(self) -> None:
-        _non_negative(count=self.count)
+        _non_negative(count=self.count, skew=self.skew)
         if self.index is not None:
             _non_negative(index=self.index)
 
@@ -276,11 +279,18 @@ class MissedQuadratureState:
         return [cands[i] for i in sorted(picks.tolist())]
 
     def apply(self, run: EncoderRun) -> None:
+        skews = np.random.default_rng([self.seed, 1])
         for signal, c1, c2 in self.chosen(run):
+            d = int(skews.integers(-self.skew, self.skew + 1)) if self.skew else 0
             if c1 in self.skip:
                 continue
             sig = run.signals[signal]
-            sig[c1:c2] = sig[c1 - 1]
+            # The held signal changes d clocks after the other (before it for d < 0),
+            # never past its own next edge.
+            later = _edges(sig)
+            later = later[later > c1]
+            end = max(c1, min(c2 + d, int(later[0]) if len(later) else len(sig)))
+            sig[c1:end] = sig[c1 - 1]
 
 
 @dataclass(frozen=True)

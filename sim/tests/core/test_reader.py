@@ -131,6 +131,36 @@ def test_a_missed_state_taken_the_wrong_way_is_corrected():
         assert all(v[c:c + 50].any() for c in closed), "a hypothesis won but the position stayed invalid"
 
 
+def test_a_missed_state_seen_a_clock_apart_the_wrong_way_round_is_a_missed_state():
+    """Locked at a steady speed, A and B change together, and the synchronizers resolve
+    the change a clock apart in the wrong order (the held signal a clock after the
+    other: MissedQuadratureState's skew drawn as +1 with seed 3). With A and B filtered
+    as one state (FILTER = 2) the decoder sees a missed state: two hypotheses, and no
+    wrong valid position. Filtered bit by bit, the same pins are two legal steps
+    backwards, and the count stands a slot off while pos_valid says it is right."""
+    from prenc.core.input_conditioner import InputConditioner
+    from prenc.virtual.encoder import Disc, VirtualEncoder
+    from prenc.virtual.faults import MissedQuadratureState
+    from prenc.virtual.trajectory import Trajectory
+
+    n, filter_len = 10, 2
+    assert int(np.random.default_rng([3, 1]).integers(-1, 2)) == 1
+    traj = Trajectory(clk_hz=1, start=100.3).constant(0.01, 6000)
+    enc = VirtualEncoder(Disc(n), [MissedQuadratureState(index=120, seed=3, skew=1)]).run(traj)
+    paired = Reader(Code(n), filter_len)
+    alone = Reader(Code(n), filter_len)
+    alone.conditioner = InputConditioner(4, filter_len)     # A and B each on its own
+    verdicts = {}
+    for name, reader in (("paired", paired), ("alone", alone)):
+        outs = reader.run(enc)
+        verdicts[name] = judge_outputs(enc, outs, LATENCY + filter_len, filter_len)
+        assert verdicts[name].first_valid is not None and verdicts[name].first_valid < 2000
+    assert verdicts["paired"].wrong == 0
+    assert paired.quadrature.illegal_count == 1
+    assert verdicts["alone"].wrong > 100
+    assert alone.quadrature.illegal_count == 0
+
+
 def test_goals_in_the_model():
     """Issue 15's table on the model at N = 10, FILTER 0: every goal, except where
     SHORT_OF_GOAL holds the core to a lower floor for now, and far above the plain
