@@ -16,12 +16,14 @@ A draw (`draw(seed)`), N = 10 at 30 MHz, FILTER = 2:
 - faults, none to two of: random misreads of a head (1 pass in 1,000 to 1 in 33), a
   contaminated slot, glitches on a signal (shorter than FILTER, as the datasheet's
   "short glitches": longer ones are real transitions), bounce on every signal (FILTER
-  clocks wide, as prenc.virtual.scenarios'), 1 to 3 missed quadrature states.
+  clocks wide, as prenc.virtual.scenarios'), 1 to 3 missed quadrature states (the two
+  changes on one clock or a clock apart, either way round: FILTER - 1).
 
 What is judged, on every clock:
 
 1. the position: no wrong valid position against the true angle (prenc.virtual.scenarios'
-   judge, as every other test of the core), or against the quarter the sensors show
+   judge, as every other test of the core: inside a stretch where faults hold the pins
+   off the disc, any position of that stretch), or against the quarter the sensors show
    where their noise alone moved an edge (`seen_by_sensors`: a reader can only follow
    its sensors);
 2. the fine position: while it is valid, within the documented bound of the core's
@@ -82,11 +84,14 @@ class Draw:
         """The pins: the optics' faults (misreads, a contaminated slot), then the sensors'
         noise on what the optics give, then the faults of the pins as the reader samples
         them: bounce on the sensors' edges, then a missed state (A and B seen changing on
-        one clock), then glitches (spikes on the line, which no comparator bounces: bounce
-        around a glitch's edges would make it longer than FILTER, a transition). A missed
-        state takes the sensors' edges, not a glitch's: held back until the other
-        signal's next edge, a glitch's end would make the glitch thousands of clocks long,
-        a quarter the disc never showed."""
+        one clock, or a clock apart either way round), then glitches (spikes on the line,
+        which no comparator bounces: bounce around a glitch's edges would make it longer
+        than FILTER, a transition). A missed state takes the sensors' edges, not a
+        glitch's: held back until the other signal's next edge, a glitch's end would make
+        the glitch thousands of clocks long, a quarter the disc never showed. Bounce
+        comes before it: FILTER clocks of bounce around the two changes could show them
+        as two states of FILTER clocks each in the wrong order, two legal steps the wrong
+        way, which no reader can tell from motion (docs/architecture.md)."""
         optical = [f for f in self.faults if isinstance(f, (RandomMisreads, ContaminatedSlot))]
         sampled = [f for f in self.faults if isinstance(f, MissedQuadratureState)]
         bounce = [f for f in self.faults if isinstance(f, Bounce)]
@@ -152,7 +157,7 @@ def draw(seed: int) -> Draw:
         lambda: RandomGlitches(str(rng.choice(["a", "b", "head1", "head2"])), int(rng.integers(1, 20)),
                                1, FILTER - 1, seed=seed),
         lambda: Bounce(("a", "b", "head1", "head2"), max(2, FILTER), seed=seed),
-        lambda: MissedQuadratureState(count=int(rng.integers(1, 4)), seed=seed),
+        lambda: MissedQuadratureState(count=int(rng.integers(1, 4)), seed=seed, skew=FILTER - 1),
     ]
     picked = rng.choice(len(choices), size=int(rng.integers(0, 3)), replace=False)
     faults = [choices[int(k)]() for k in picked]

@@ -9,12 +9,14 @@ clock, with the truth of the run:
     whenever valid is 1, pos_hyb (and pos_abs = pos_hyb >> 2) equals the true hybrid
     position `latency` clocks earlier
 
-except where a fault on A or B moved the pins themselves away from the truth: there
-the truth of the clocks within that many clocks is accepted too (`sync_tolerance`:
-the longest stretch of such clocks, those fewer than F apart counted as one).
-With a glitch filter of F clocks, the truth within F clocks is accepted as well: the
-filter removes true pulses shorter than F (a reversal right at an edge) as it
-removes glitches.
+except where a fault on A or B moved the pins themselves away from the truth: at a
+clock inside such a stretch (`sync_stretches`: the clocks where the faulted A or B
+differ from the clean ones, those fewer than F apart counted as one), the truth of
+any clock of that stretch or of the clock either side is accepted too, and nowhere
+else: a fault can hold the pins back or push them on for as long as it lasts, not
+longer. With a glitch filter
+of F clocks, the truth within F clocks is accepted as well: the filter removes true
+pulses shorter than F (a reversal right at an edge) as it removes glitches.
 """
 
 from __future__ import annotations
@@ -41,6 +43,16 @@ def max_speed(filter_len: int) -> float:
     """Slots per clock the scenarios stay under: 0.2 / (FILTER + 2), so each
     quadrature state lasts more than the filter needs."""
     return 0.2 / (filter_len + 2)
+
+
+def glitch_speed(filter_len: int) -> float:
+    """Slots per clock the scenarios with glitches stay under: max_speed, and each
+    quadrature state at least 3 FILTER clocks long (1 / (12 FILTER) slots a clock).
+    A glitch shorter than FILTER then leaves at least FILTER clocks of the state on one
+    side of it, which the filter shows. Faster, glitches can hide a state (the filter
+    shows A and B as one state) or delay one signal's edge past the other's, and a
+    reader counts wrong (docs/architecture.md)."""
+    return min(max_speed(filter_len), 1 / (12 * filter_len)) if filter_len else max_speed(filter_len)
 
 
 @dataclass
@@ -102,24 +114,35 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
         add(f"dead_head{head}_{mode}", f"head {head} {mode} after start-up",
             traj().constant(v, lock_clocks).random_walk(10000, **walk),
             [DeadHead(head, mode, start_clock=lock_clocks, seed=seed)])
+    # Glitches shorter than FILTER at a speed where each state lasts 3 FILTER clocks
+    # (glitch_speed): one glitch leaves FILTER clocks of a state on a side of it.
+    vg = glitch_speed(filter_len)
     add("glitches", "glitches on A and B shorter than the filter (none without a filter)",
-        traj().constant(v, lock_clocks).random_walk(10000, **walk),
+        traj().constant(vg, int(lock / vg) + 200).random_walk(
+            10000, **dict(walk, max_speed=vg, knot_seconds=int(8 / vg))),
         [RandomGlitches("a", 20, 1, filter_len - 1, seed),
          RandomGlitches("b", 20, 1, filter_len - 1, seed + 1)] if filter_len >= 2 else [])
-    add("missed_state", "quadrature states missed: A and B seen changing together",
+    # A missed state's two changes reach the pins together or up to FILTER - 1 clocks
+    # apart in either order (the synchronizers, bounce): the filter keeps A and B as one
+    # state, so the reader sees them together either way.
+    skew = max(filter_len - 1, 0)
+    add("missed_state", "quadrature states missed: A and B seen changing together "
+        "(or fewer than FILTER clocks apart, either way round)",
         traj().constant(v, lock_clocks).random_walk(12000, **walk),
-        [MissedQuadratureState(count=3, seed=seed)])
+        [MissedQuadratureState(count=3, seed=seed, skew=skew)])
     add("bounce", "chatter on every edge of all four signals",
         traj().constant(v, lock_clocks).random_walk(10000, **walk),
         [Bounce(("a", "b", "head1", "head2"), width=max(2, filter_len), seed=seed)])
-    # Not combined: bounce on A/B with a missed state. Chatter can split "A and B
-    # changing together" into two legal steps in the wrong order, a miscount that no
-    # quadrature decoder can see (the code check finds it at a later strobe).
+    # Not combined: bounce of FILTER clocks on A/B with a missed state. Chatter that
+    # long can split "A and B changing together" into two states, each FILTER clocks
+    # long, in the wrong order: two legal steps the wrong way, a slot off, which no
+    # quadrature decoder can see (the code check finds it at later strobes). FILTER
+    # must outlast the chatter (docs/architecture.md).
     add("combined", "misreads, a contaminated slot, a dead head, missed states, head bounce",
         traj().constant(v, lock_clocks).random_walk(16000, **walk),
         [RandomMisreads(1, 0.01, seed), ContaminatedSlot(2, (p + 5) % length),
          DeadHead(1, "noise", start_clock=lock_clocks + 8000, seed=seed),
-         MissedQuadratureState(count=2, seed=seed),
+         MissedQuadratureState(count=2, seed=seed, skew=skew),
          Bounce(("head1", "head2"), width=max(2, filter_len), seed=seed)])
     return {s.name: s for s in out}
 
@@ -130,25 +153,38 @@ def must_lock(name: str) -> bool:
     return name.startswith(("start", "reversals", "accelerate"))
 
 
-def sync_tolerance(enc: EncoderRun, filter_len: int = 0,
-                   clean: tuple[np.ndarray, np.ndarray] | None = None) -> int:
-    """Clocks a fault on A or B can hold the reader's view of them off the truth: the
-    longest stretch from the first to the last clock where the faulted A or B differs
-    from the clean one (the ideal disc's, or `clean`: the disc's own A and B), where
-    clocks fewer than `filter_len` apart count as one stretch.
+def sync_stretches(enc: EncoderRun, filter_len: int = 0,
+                   clean: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The stretches where a fault on A or B holds the pins off the truth: (first clocks,
+    last clocks), each stretch from the first to the last clock where the faulted A or B
+    differs from the clean one (the ideal disc's, or `clean`: the disc's own A and B),
+    where clocks fewer than `filter_len` apart count as one stretch.
 
     A glitch filter of F clocks cannot settle between two such clocks (it needs F equal
     samples in a row), so two 1-clock glitches next to a true edge with one clean
-    clock between them delay that edge by the whole stretch, not by one clock."""
+    clock between them delay that edge by the whole stretch, not by one clock. For the
+    same reason a state of the pins shorter than F clocks is in a stretch, fault or not:
+    the filter, which keeps A and B as one state, never shows it and holds the state
+    before it (A and B changing a clock apart, a reversal right at an edge)."""
     a, b = Disc.sync(enc.theta) if clean is None else clean
-    differs = np.flatnonzero((enc.a != a) | (enc.b != b))
+    changes = np.flatnonzero((enc.a[1:] != enc.a[:-1]) | (enc.b[1:] != enc.b[:-1])) + 1
+    bounds = np.concatenate([[0], changes, [len(enc.a)]])
+    short = np.repeat(np.diff(bounds) < filter_len, np.diff(bounds))
+    differs = np.flatnonzero((enc.a != a) | (enc.b != b) | short)
     if not len(differs):
-        return 0
+        return differs, differs
     # A new stretch starts where the clean clocks since the last differing one
     # number filter_len or more.
     starts = np.concatenate([[0], np.flatnonzero(np.diff(differs) - 1 >= max(filter_len, 1)) + 1])
     ends = np.concatenate([starts[1:] - 1, [len(differs) - 1]])
-    return int((differs[ends] - differs[starts] + 1).max())
+    return differs[starts], differs[ends]
+
+
+def sync_tolerance(enc: EncoderRun, filter_len: int = 0,
+                   clean: tuple[np.ndarray, np.ndarray] | None = None) -> int:
+    """The longest of the `sync_stretches`, in clocks (0 without any)."""
+    first, last = sync_stretches(enc, filter_len, clean)
+    return int((last - first + 1).max()) if len(first) else 0
 
 
 @dataclass
@@ -175,19 +211,33 @@ def judge(enc: EncoderRun, valid: np.ndarray, pos_hyb: np.ndarray, mode: np.ndar
     disc's hybrid position, or `truth` with the disc's own clean A and B (`clean`: a
     printed disc's quarters are its printed edges). `seen`: a second position accepted
     as well, clock for clock, within the same tolerance: the quarter the sensors show
-    where their noise moved an edge (`seen_by_sensors`)."""
-    tol = (sync_tolerance(enc, filter_len, clean) if tolerance is None else tolerance) + filter_len
+    where their noise moved an edge (`seen_by_sensors`). `tolerance`: clocks of the
+    truth accepted around every clock instead of the faults' own stretches (the tests'
+    handle on the judge)."""
     valid = np.asarray(valid).astype(bool)
     pos_hyb = np.asarray(pos_hyb, dtype=np.int64)
     truth = enc.hybrid if truth is None else truth
     clocks = len(valid)
     idx = np.arange(clocks) - latency
     ok = np.zeros(clocks, dtype=bool)
+    tol = filter_len + (0 if tolerance is None else tolerance)
     for d in range(-tol, tol + 1):
         j = np.clip(idx + d, 0, len(truth) - 1)
         ok |= truth[j] == pos_hyb
         if seen is not None:
             ok |= seen[j] == pos_hyb
+    if tolerance is None:
+        # Inside a stretch of faulted pins (widened by the filter), any position the
+        # truth or the sensors took during that stretch or on the clocks either side of
+        # it (what a fault holds the pins at, or pushes them on to).
+        for first, last in zip(*sync_stretches(enc, filter_len, clean)):
+            lo = max(int(first) - 1 - filter_len, 0)
+            hi = min(int(last) + 1 + filter_len, len(truth) - 1)
+            shown = np.unique(truth[lo:hi + 1])
+            if seen is not None:
+                shown = np.union1d(shown, seen[lo:hi + 1])
+            k = slice(max(lo + latency, 0), max(min(hi + latency + 1, clocks), 0))
+            ok[k] |= np.isin(pos_hyb[k], shown)
     bad = valid & ~ok & (idx >= 0)
     wrong = int(bad.sum())
     first_valid = int(np.argmax(valid)) if valid.any() else None

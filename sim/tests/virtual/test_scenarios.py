@@ -15,7 +15,7 @@ from prenc.core.reader import Reader
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.faults import Glitch
 from prenc.virtual.scenarios import (core_latency, judge, judge_outputs, quarter_state, scenarios,
-                                     seen_by_sensors, sync_tolerance)
+                                     seen_by_sensors, sync_stretches, sync_tolerance)
 from prenc.virtual.trajectory import Trajectory
 
 N = 6
@@ -32,20 +32,41 @@ def first_b_edge(after: int = 50) -> int:
 
 
 def test_chatter_after_an_edge_is_one_stretch_for_a_filter():
-    """Two 1-clock glitches on B just after a B edge, one clean clock between them:
-    without a filter they are two 1-clock faults; a 2-clock filter cannot settle
-    between them, so they hold B off the truth from the first to the last (3 clocks).
-    With two clean clocks between them, the filter settles in the gap."""
+    """Two 1-clock glitches on B just after a B edge (t), one clean clock between them,
+    in the 5 clocks before A's next edge (t + 5): without a filter they are two 1-clock
+    faults. A 2-clock filter cannot settle between them, and every state of the pins
+    from t to t + 4 lasts one clock, shorter than the filter: one stretch of 5 clocks
+    (the filter shows none of them). With two clean clocks between the glitches, the
+    2-clock state between them passes a 2-clock filter and splits the stretch (t to
+    t + 1, then t + 4); a 3-clock filter shows none of them again."""
     t = first_b_edge()
     near = VirtualEncoder(Disc(N), [Glitch("b", t + 1), Glitch("b", t + 3)]).run(clean_run())
     assert sync_tolerance(near) == 1
-    assert sync_tolerance(near, filter_len=2) == 3
-    assert sync_tolerance(near, filter_len=3) == 3
+    assert sync_tolerance(near, filter_len=2) == 5
+    assert sync_tolerance(near, filter_len=3) == 5
     apart = VirtualEncoder(Disc(N), [Glitch("b", t + 1), Glitch("b", t + 4)]).run(clean_run())
-    assert sync_tolerance(apart, filter_len=2) == 1
-    assert sync_tolerance(apart, filter_len=3) == 4
+    assert list(zip(*sync_stretches(apart, filter_len=2))) == [(t, t + 1), (t + 4, t + 4)]
+    assert sync_tolerance(apart, filter_len=3) == 5
     clean = VirtualEncoder(Disc(N)).run(clean_run())
     assert sync_tolerance(clean, filter_len=2) == 0
+
+
+def test_a_stretch_excuses_its_own_clocks_only():
+    """The judge's tolerance is each stretch's own: a reader that holds the position
+    before a 1-clock glitch late in the run is excused there, and the same hold where
+    no fault is, early in the run, is wrong (a global tolerance, the longest stretch
+    anywhere, excused both)."""
+    t = first_b_edge(after=300)
+    enc = VirtualEncoder(Disc(N), [Glitch("b", t + 1), Glitch("b", t + 3)]).run(clean_run())
+    truth = enc.hybrid
+    mode = np.zeros(len(enc), dtype=np.int64)
+    valid = np.ones(len(enc), dtype=np.int64)
+    held = truth.copy()
+    held[t:t + 5] = truth[t - 1]                     # through the glitches: excused
+    assert judge(enc, valid, held, mode, 0, filter_len=2).wrong == 0
+    early = first_b_edge()
+    held[early:early + 5] = truth[early - 1]         # the same hold with no fault: wrong
+    assert judge(enc, valid, held, mode, 0, filter_len=2).wrong == 5 - 2
 
 
 def test_judge_rejects_a_position_held_past_the_tolerance():
@@ -97,7 +118,7 @@ def test_glitch_chatter_draw_of_ci_is_right():
     n, filter_len, seed = 8, 2, 809969825
     enc = scenarios(n, filter_len, seed)["glitches"].run(n)
     assert sync_tolerance(enc) == 1
-    assert sync_tolerance(enc, filter_len) == 3
+    assert sync_tolerance(enc, filter_len) == 5   # B's edge to A's: 1-clock states only
     outs = Reader(Code(n), filter_len).run(enc, 4)
     verdict = judge_outputs(enc, outs, core_latency(filter_len), filter_len)
     assert verdict.wrong == 0, f"wrong valid at clock {verdict.first_wrong}"
