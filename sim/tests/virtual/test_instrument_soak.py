@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """The instrument soak (prenc.virtual.instrument_soak, `make soak ARGS=--instrument`):
 the draws CI can afford pass every check; the draws are reproducible; and the checks
-can fail: a fine position built with more extrapolation than its bound allows is caught."""
+can fail: a fine position built with more extrapolation than its bound allows is caught,
+and so is a count a slot off at speed."""
 
 from __future__ import annotations
 
@@ -31,3 +32,29 @@ def test_a_draw_is_reproducible():
 def test_a_fine_position_beyond_its_bound_fails():
     result = run_draw(3, fine_lookahead_halves=LOOKAHEAD_HALVES + 60)
     assert any("fine position" in f for f in result.failures), result.failures[:3]
+
+
+def test_a_slot_error_at_speed_is_caught():
+    """Seed 4 with its missed states applied before its bounce (which can then show the
+    two changes a clock or two apart in the wrong order), read with A and B filtered one
+    by one: the count goes a slot behind at 5,480 rpm, and the position's judge sees it.
+    (Its tolerance was once the run's longest fault stretch, 1,180 clocks here, 3.7
+    slots at that speed, and it passed this draw.)"""
+    from prenc.codes.debruijn import Code
+    from prenc.core.input_conditioner import InputConditioner
+    from prenc.core.reader import Reader
+    from prenc.virtual.encoder import Disc, VirtualEncoder
+    from prenc.virtual.faults import Bounce, MissedQuadratureState
+    from prenc.virtual.instrument_soak import CLK_HZ, FILTER, N, judge_position
+
+    d = draw(4)
+    missed = [f for f in d.faults if isinstance(f, MissedQuadratureState)]
+    bounce = [f for f in d.faults if isinstance(f, Bounce)]
+    assert missed and bounce and len(d.faults) == 2
+    enc = VirtualEncoder(Disc(N, printing=d.printing), [*d.sensors, *missed, *bounce]).run(d.theta, CLK_HZ)
+    reader = Reader(Code(N), FILTER)
+    reader.conditioner = InputConditioner(4, FILTER)
+    outs = reader.run(enc)
+    wrong, _ = judge_position(d, enc, np.array([o.valid for o in outs]).astype(bool),
+                              np.array([o.pos_hyb for o in outs]), np.array([o.mode for o in outs]))
+    assert wrong > 1000
