@@ -382,8 +382,8 @@ def main() -> int:
         rpm = CLOCK_HZ / d / 4 / 1024 * 60
         swept = " ".join(f"{k}:{'ok' if v else 'x'}" for k, v in sorted(verdicts.items()))
         print(f"   {filter_len:>6} {d:>6} clk {1 / d:>16.2f}x {rpm:>13,.0f} rpm N=10  {swept}")
-    print("   A filter of F clocks needs each of A and B to hold a level F clocks; each holds it")
-    print("   for two quadrature states, so the dwell limit is max(1, ceil(F / 2)).")
+    print("   A filter of F clocks passes a quadrature state that the pins held F clocks (A and B")
+    print("   are one state to it), so the dwell limit is max(1, F).")
 
     from prenc.virtual.campaign import campaign
     print("\n4. Fault campaign, reference reader (events, seed 1): wrong valid positions must be 0")
@@ -706,7 +706,7 @@ def chatter_filter_rows() -> None:
     whose conditioner (prenc.core.input_conditioner, the RTL's model) passes no extra
     transition of A, for chatter of 2 pairs of toggles within a window after each crossing,
     and the fastest disc that FILTER still tracks (a quadrature state must last
-    max(1, ceil(FILTER / 2)) clocks: section 3)."""
+    max(1, FILTER) clocks: section 3)."""
     from prenc.core.input_conditioner import InputConditioner
     from prenc.virtual.encoder import Disc, VirtualEncoder
     from prenc.virtual.sensors import Chatter
@@ -732,7 +732,7 @@ def chatter_filter_rows() -> None:
         if found is None:
             print(f"   {window_us:>6.1f}us {'> 1024':>8}")
             continue
-        dwell = max(1, -(-found // 2))
+        dwell = max(1, found)
         print(f"   {window_us:>6.1f}us {found:>8} {clk / dwell / 4 / 1024 * 60:>8,.0f} rpm")
 
 
