@@ -115,8 +115,19 @@ def test_glitch_chatter_draw_of_ci_is_right():
     edge by 4 clocks, one more than the longest single glitch plus the filter. The
     reader (model and RTL alike) was right; the judge now counts the chatter as one
     stretch and accepts it."""
+    from prenc.virtual.faults import RandomGlitches
+    from prenc.virtual.scenarios import max_speed
+
     n, filter_len, seed = 8, 2, 809969825
-    enc = scenarios(n, filter_len, seed)["glitches"].run(n)
+    # The draw as the scenarios made it then, at the clean speed limit (their glitches
+    # now run at glitch_speed): the same start, walk and glitches.
+    v = max_speed(filter_len)
+    start = float(np.random.default_rng(seed).uniform(0, 1 << n))
+    lock_clocks = int((4 * n + 4) / v) + 200
+    traj = Trajectory(clk_hz=1, start=start).constant(v, lock_clocks).random_walk(
+        10000, max_speed=v, seed=seed, knot_seconds=int(8 / v))
+    enc = VirtualEncoder(Disc(n), [RandomGlitches("a", 20, 1, filter_len - 1, seed),
+                                   RandomGlitches("b", 20, 1, filter_len - 1, seed + 1)]).run(traj)
     assert sync_tolerance(enc) == 1
     assert sync_tolerance(enc, filter_len) == 5   # B's edge to A's: 1-clock states only
     outs = Reader(Code(n), filter_len).run(enc, 4)
