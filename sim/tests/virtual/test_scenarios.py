@@ -13,8 +13,8 @@ import numpy as np
 from prenc.codes.debruijn import Code
 from prenc.core.reader import Reader
 from prenc.virtual.encoder import Disc, VirtualEncoder
-from prenc.virtual.faults import Glitch
-from prenc.virtual.scenarios import (core_latency, judge, judge_outputs, quarter_state, scenarios,
+from prenc.virtual.faults import Glitch, RandomGlitches
+from prenc.virtual.scenarios import (core_latency, judge, judge_outputs, max_speed, quarter_state, scenarios,
                                      seen_by_sensors, sync_stretches, sync_tolerance)
 from prenc.virtual.trajectory import Trajectory
 
@@ -115,9 +115,6 @@ def test_glitch_chatter_draw_of_ci_is_right():
     edge by 4 clocks, one more than the longest single glitch plus the filter. The
     reader (model and RTL alike) was right; the judge now counts the chatter as one
     stretch and accepts it."""
-    from prenc.virtual.faults import RandomGlitches
-    from prenc.virtual.scenarios import max_speed
-
     n, filter_len, seed = 8, 2, 809969825
     # The draw as the scenarios made it then, at the clean speed limit (their glitches
     # now run at glitch_speed): the same start, walk and glitches.
