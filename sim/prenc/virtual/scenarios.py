@@ -55,6 +55,16 @@ def glitch_speed(filter_len: int) -> float:
     return min(max_speed(filter_len), 1 / (12 * filter_len)) if filter_len else max_speed(filter_len)
 
 
+def fault_speed(filter_len: int, width: int) -> float:
+    """Slots per clock the scenarios stay under when a fault holds the pins off the disc
+    for up to `width` clocks at an edge (bounce, a missed state's skew): max_speed, and
+    each quadrature state 1.25 (width + FILTER) clocks long, so that FILTER clean clocks
+    of it are left for the filter, which shows A and B as one state. Faster, the filter
+    can miss the state, and chatter can show the neighbours in the wrong order: a
+    reader counts wrong (docs/architecture.md)."""
+    return min(max_speed(filter_len), 0.2 / max(width + filter_len, 1))
+
+
 @dataclass
 class Scenario:
     name: str
@@ -124,26 +134,34 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
          RandomGlitches("b", 20, 1, filter_len - 1, seed + 1)] if filter_len >= 2 else [])
     # A missed state's two changes reach the pins together or up to FILTER - 1 clocks
     # apart in either order (the synchronizers, bounce): the filter keeps A and B as one
-    # state, so the reader sees them together either way.
+    # state, so the reader sees them together either way. Bounce is FILTER clocks wide.
+    # Both hold the pins off the disc around an edge, so these scenarios move at
+    # fault_speed: the state after the fault still lasts FILTER clocks.
     skew = max(filter_len - 1, 0)
+    width = max(2, filter_len)
+
+    def faulty_walk(vf: float, clocks: int) -> Trajectory:
+        return traj().constant(vf, int(lock / vf) + 200).random_walk(
+            clocks, **dict(walk, max_speed=vf, knot_seconds=int(8 / vf)))
+
     add("missed_state", "quadrature states missed: A and B seen changing together "
         "(or fewer than FILTER clocks apart, either way round)",
-        traj().constant(v, lock_clocks).random_walk(12000, **walk),
+        faulty_walk(fault_speed(filter_len, skew), 12000),
         [MissedQuadratureState(count=3, seed=seed, skew=skew)])
     add("bounce", "chatter on every edge of all four signals",
-        traj().constant(v, lock_clocks).random_walk(10000, **walk),
-        [Bounce(("a", "b", "head1", "head2"), width=max(2, filter_len), seed=seed)])
+        faulty_walk(fault_speed(filter_len, width), 10000),
+        [Bounce(("a", "b", "head1", "head2"), width=width, seed=seed)])
     # Not combined: bounce of FILTER clocks on A/B with a missed state. Chatter that
     # long can split "A and B changing together" into two states, each FILTER clocks
     # long, in the wrong order: two legal steps the wrong way, a slot off, which no
     # quadrature decoder can see (the code check finds it at later strobes). FILTER
     # must outlast the chatter (docs/architecture.md).
     add("combined", "misreads, a contaminated slot, a dead head, missed states, head bounce",
-        traj().constant(v, lock_clocks).random_walk(16000, **walk),
+        faulty_walk(fault_speed(filter_len, skew), 16000),
         [RandomMisreads(1, 0.01, seed), ContaminatedSlot(2, (p + 5) % length),
          DeadHead(1, "noise", start_clock=lock_clocks + 8000, seed=seed),
          MissedQuadratureState(count=2, seed=seed, skew=skew),
-         Bounce(("head1", "head2"), width=max(2, filter_len), seed=seed)])
+         Bounce(("head1", "head2"), width=width, seed=seed)])
     return {s.name: s for s in out}
 
 

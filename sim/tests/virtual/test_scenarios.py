@@ -14,7 +14,7 @@ from prenc.codes.debruijn import Code
 from prenc.core.reader import Reader
 from prenc.virtual.encoder import Disc, VirtualEncoder
 from prenc.virtual.faults import Glitch, RandomGlitches
-from prenc.virtual.scenarios import (core_latency, judge, judge_outputs, max_speed, quarter_state, scenarios,
+from prenc.virtual.scenarios import (core_latency, fault_speed, judge, judge_outputs, max_speed, quarter_state, scenarios,
                                      seen_by_sensors, sync_stretches, sync_tolerance)
 from prenc.virtual.trajectory import Trajectory
 
@@ -131,3 +131,23 @@ def test_glitch_chatter_draw_of_ci_is_right():
     verdict = judge_outputs(enc, outs, core_latency(filter_len), filter_len)
     assert verdict.wrong == 0, f"wrong valid at clock {verdict.first_wrong}"
     assert verdict.availability > 0.95
+
+
+def test_bounce_and_skew_leave_filter_clocks_of_each_state():
+    """With A and B as one state, the part of a state that bounce (FILTER clocks wide)
+    or a missed state's skew (up to FILTER - 1 clocks) leaves clean must last FILTER
+    clocks: those scenarios move at fault_speed, at most 1.25 (w + FILTER) clocks a
+    state. At FILTER 8 that is slower than the clean limit, at FILTER 2 it is the clean
+    limit. Seed 1's bounce draw at FILTER 8, at the clean limit, held a wrong valid
+    position for 162 clocks; at fault_speed the model reads both draws right."""
+    assert fault_speed(2, 2) == max_speed(2)
+    assert fault_speed(8, 8) == 0.2 / 16 < max_speed(8)
+    n, filter_len, seed = 10, 8, 1
+    for name, width in (("bounce", 8), ("missed_state", 7)):
+        sc = scenarios(n, filter_len, seed)[name]
+        speed = np.abs(np.diff(sc.trajectory.theta)).max()
+        assert speed <= fault_speed(filter_len, width) + 1e-12, name
+        enc = sc.run(n)
+        verdict = judge_outputs(enc, Reader(Code(n), filter_len).run(enc, 4), core_latency(filter_len), filter_len)
+        assert verdict.wrong == 0, f"{name}: wrong valid at clock {verdict.first_wrong}"
+        assert verdict.availability > 0.5, name
