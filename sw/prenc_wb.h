@@ -22,7 +22,7 @@ extern "C" {
 #define PRENC_WB__VERSION__PATCH_bm 0xff
 #define PRENC_WB__VERSION__PATCH_bp 0
 #define PRENC_WB__VERSION__PATCH_bw 8
-#define PRENC_WB__VERSION__PATCH_reset 0x0
+#define PRENC_WB__VERSION__PATCH_reset 0x1
 #define PRENC_WB__VERSION__MINOR_bm 0xff00
 #define PRENC_WB__VERSION__MINOR_bp 8
 #define PRENC_WB__VERSION__MINOR_bw 8
