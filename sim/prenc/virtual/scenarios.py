@@ -124,12 +124,15 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
         add(f"dead_head{head}_{mode}", f"head {head} {mode} after start-up",
             traj().constant(v, lock_clocks).random_walk(10000, **walk),
             [DeadHead(head, mode, start_clock=lock_clocks, seed=seed)])
+    def slower_walk(speed: float, clocks: int) -> Trajectory:
+        """The start-up and random walk of the others, under a lower speed limit."""
+        return traj().constant(speed, int(lock / speed) + 200).random_walk(
+            clocks, **dict(walk, max_speed=speed, knot_seconds=int(8 / speed)))
+
     # Glitches shorter than FILTER at a speed where each state lasts 3 FILTER clocks
     # (glitch_speed): one glitch leaves FILTER clocks of a state on a side of it.
-    vg = glitch_speed(filter_len)
     add("glitches", "glitches on A and B shorter than the filter (none without a filter)",
-        traj().constant(vg, int(lock / vg) + 200).random_walk(
-            10000, **dict(walk, max_speed=vg, knot_seconds=int(8 / vg))),
+        slower_walk(glitch_speed(filter_len), 10000),
         [RandomGlitches("a", 20, 1, filter_len - 1, seed),
          RandomGlitches("b", 20, 1, filter_len - 1, seed + 1)] if filter_len >= 2 else [])
     # A missed state's two changes reach the pins together or up to FILTER - 1 clocks
@@ -140,16 +143,12 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
     skew = max(filter_len - 1, 0)
     width = max(2, filter_len)
 
-    def faulty_walk(vf: float, clocks: int) -> Trajectory:
-        return traj().constant(vf, int(lock / vf) + 200).random_walk(
-            clocks, **dict(walk, max_speed=vf, knot_seconds=int(8 / vf)))
-
     add("missed_state", "quadrature states missed: A and B seen changing together "
         "(or fewer than FILTER clocks apart, either way round)",
-        faulty_walk(fault_speed(filter_len, skew), 12000),
+        slower_walk(fault_speed(filter_len, skew), 12000),
         [MissedQuadratureState(count=3, seed=seed, skew=skew)])
     add("bounce", "chatter on every edge of all four signals",
-        faulty_walk(fault_speed(filter_len, width), 10000),
+        slower_walk(fault_speed(filter_len, width), 10000),
         [Bounce(("a", "b", "head1", "head2"), width=width, seed=seed)])
     # Not combined: bounce of FILTER clocks on A/B with a missed state. Chatter that
     # long can split "A and B changing together" into two states, each FILTER clocks
@@ -157,7 +156,7 @@ def scenarios(n: int, filter_len: int, seed: int = 1) -> dict[str, Scenario]:
     # quadrature decoder can see (the code check finds it at later strobes). FILTER
     # must outlast the chatter (docs/architecture.md).
     add("combined", "misreads, a contaminated slot, a dead head, missed states, head bounce",
-        faulty_walk(fault_speed(filter_len, skew), 16000),
+        slower_walk(fault_speed(filter_len, skew), 16000),
         [RandomMisreads(1, 0.01, seed), ContaminatedSlot(2, (p + 5) % length),
          DeadHead(1, "noise", start_clock=lock_clocks + 8000, seed=seed),
          MissedQuadratureState(count=2, seed=seed, skew=skew),
