@@ -38,9 +38,11 @@
 //                its last 4N checks (3)
 //   DUAL_VOTES   votes that decide between the two hypotheses of a missed state (3)
 //   DUAL_SPAN    slots of travel the decision may take before the offset drops (12)
-//   HYPOTHESES   1: a missed quadrature state opens the two hypotheses; 0: it drops the
-//                position until the next lock, with no landing reading: about a fifth
-//                less logic, for sync tracks that never miss a state (default 1)
+//   HYPOTHESES   1: a missed quadrature state opens the two hypotheses, and while
+//                acquiring the windows keep the readings right either way; 0: it drops
+//                the position until the next lock and empties the windows, with no
+//                landing reading: about a fifth less logic, for sync tracks that never
+//                miss a state (default 1)
 //   SCORE_UP, SCORE_LIMIT   a track's health score: + SCORE_UP per mismatch, - 1 per
 //                match, unsupported at SCORE_LIMIT (defaults 4, 12)
 //   CONV_REG     1: the converters' output is registered before the offset's subtraction
@@ -274,7 +276,8 @@ module prenc_core #(
     .SCORE_UP    (SCORE_UP),
     .SCORE_LIMIT (SCORE_LIMIT),
     .ERROR_WIDTH (ERROR_WIDTH),
-    .EXT_MAX     (EXT_MAX)
+    .EXT_MAX     (EXT_MAX),
+    .KEEP        (HYPOTHESES)
   ) u_track1 (
     .clk          (clk),
     .rst          (rst),
@@ -283,6 +286,7 @@ module prenc_core #(
     .up           (up),
     .down         (down),
     .illegal      (ev_illegal),
+    .illegal_cw   (ev_illegal_cw),
     .slot         (slot),
     .flush        (flush[0]),
     .law_on       (law_on[0]),
@@ -316,7 +320,8 @@ module prenc_core #(
     .SCORE_UP    (SCORE_UP),
     .SCORE_LIMIT (SCORE_LIMIT),
     .ERROR_WIDTH (ERROR_WIDTH),
-    .EXT_MAX     (EXT_MAX)
+    .EXT_MAX     (EXT_MAX),
+    .KEEP        (HYPOTHESES)
   ) u_track2 (
     .clk          (clk),
     .rst          (rst),
@@ -325,6 +330,7 @@ module prenc_core #(
     .up           (up),
     .down         (down),
     .illegal      (ev_illegal),
+    .illegal_cw   (ev_illegal_cw),
     .slot         (slot),
     .flush        (flush[1]),
     .law_on       (law_on[1]),
@@ -611,7 +617,17 @@ module prenc_core #(
       assert (pos_hyb == f_h_d[F_LATENCY - 1]);
     end
   end
-`endif
+  // The first lock after a missed state while acquiring (the windows keep the readings
+  // that are right either way): within the disc task's depth (task disc_cover, 30
+  // clocks).
+  reg f_was_valid = 1'b0;
+  reg f_missed_acquiring = 1'b0;
+  always @(posedge clk) begin
+    if (pos_valid) f_was_valid <= 1'b1;
+    if (f_move == 2'd2 && !f_was_valid && f_since_rst >= 4'd4) f_missed_acquiring <= 1'b1;
+    if (f_past_valid && !rst) cover (pos_valid && f_missed_acquiring);
+  end
+`else
   // From the pins: the first lock on both heads, on one head, the hypotheses of a
   // missed state, a misread survived (cover traces: the whole reader at work).
   always @(posedge clk) begin
@@ -624,7 +640,8 @@ module prenc_core #(
       cover (mode == 3'd1 && (track1_errors != 0 || track2_errors != 0));
     end
   end
-`endif
+`endif  // F_DISC
+`endif  // FORMAL
 
 endmodule
 

@@ -7,9 +7,13 @@
 // the window slides and the entering bit is the disc's law applied to the window
 // (forward at the top, inverse at the bottom), so a window that holds the disc's
 // bits keeps holding them.
-//   raw mode  (acquiring): a strobe writes the reading at the index (known); an
-//             illegal quadrature transition makes every bit unknown (the window keeps
-//             its place). Evidence is counted in distinct slots: ext_lo / ext_hi are
+//   raw mode  (acquiring): a strobe writes the reading at the index (known); at an
+//             illegal quadrature transition the count may be a slot off (the other
+//             way, every reading belongs one index further along the count's way), so
+//             a bit stays known only where the bit that would take its place is known
+//             and equal: right whichever way the disc went (none if the same clock
+//             slides the window or writes, or with KEEP = 0; the window keeps its
+//             place). Evidence is counted in distinct slots: ext_lo / ext_hi are
 //             the slots just below / above the window whose last reading equals the
 //             law's extension of the window (a slide over a known bit keeps it there,
 //             a slide back takes it as known, a reading that changes the word empties
@@ -51,12 +55,15 @@
 //   ERROR_WIDTH  mismatch counter width, 1..32 (saturates)
 //   EXT_MAX      span saturation, 1..63 (the deepest lock's need)
 //   QUIET        agreeing checks after which a head is quiet, 1..63 (default 4N)
+//   KEEP         1: a missed state in raw mode keeps the readings right either way;
+//                0: it forgets them all (the core's HYPOTHESES = 0)
 //
 // Ports
 //   strobe, head             a mid-slot strobe and this head's reading
 //   up, down, illegal        the count moved (an illegal step may come with a move)
+//   illegal_cw               the way the count took at the illegal step (CW: + 2 quarters)
 //   slot                     the count after this clock's move
-//                            (these six: applied on the next clock)
+//                            (these seven: applied on the next clock)
 //   flush, law_on            from the judge: empty to raw mode / turn to law mode
 //   realign_up, realign_down from the judge: move the index one slot, on the first
 //                            clock without an event after the pulse (the other
@@ -84,7 +91,8 @@ module prenc_track_word #(
   parameter integer SCORE_LIMIT = 12,
   parameter integer ERROR_WIDTH = 16,
   parameter integer EXT_MAX     = N + 1,
-  parameter integer QUIET       = (4 * N > 63) ? 63 : 4 * N
+  parameter integer QUIET       = (4 * N > 63) ? 63 : 4 * N,
+  parameter integer KEEP        = 1
 ) (
   input  wire                   clk,
   input  wire                   rst,
@@ -93,6 +101,7 @@ module prenc_track_word #(
   input  wire                   up,
   input  wire                   down,
   input  wire                   illegal,
+  input  wire                   illegal_cw,
   input  wire [N-1:0]           slot,
   input  wire                   flush,
   input  wire                   law_on,
@@ -127,6 +136,10 @@ module prenc_track_word #(
       initial $display("ERROR: %m: parameter TAPS = 'h%0h is not a feedback set for N = %0d",
                        TAPS, N);
       prenc_track_word_parameter_TAPS_not_a_feedback_set_for_N u_stop ();
+    end
+    if (KEEP != 0 && KEEP != 1) begin : g_bad_keep
+      initial $display("ERROR: %m: parameter KEEP = %0d must be 0 or 1", KEEP);
+      prenc_track_word_parameter_KEEP_must_be_0_or_1 u_stop ();
     end
     if (HEAD_OFFSET != 0 && HEAD_OFFSET != N - 1) begin : g_bad_head_offset
       initial $display("ERROR: %m: parameter HEAD_OFFSET = %0d must be 0 or N-1", HEAD_OFFSET);
@@ -211,6 +224,7 @@ module prenc_track_word #(
   // the word, the converter's address and the base start from registers.
   reg         strobe_d;
   reg         illegal_d;
+  reg         illegal_cw_d;
   reg         head_d;
   reg [N-1:0] slot_d;
   reg         idle_reg;
@@ -279,6 +293,12 @@ module prenc_track_word #(
   wire [N-1:0] word_write = (word_reg & ~at_index) | (at_index & {N{head_d}});
   wire [N-1:0] word_next  = slide_up ? word_up : slide_down ? word_down :
                             write_raw ? word_write : word_reg;
+  // At an illegal step without a slide or a write: the bits whose neighbour against the
+  // count's way (index i - 1 when the count took the CW step; index i's bit is word bit
+  // N-1-i) is known and equal. agree[b]: word bits b and b + 1 both known and equal.
+  wire [N-1:0] agree      = {1'b0, known_reg[N-1:1] & known_reg[N-2:0] &
+                                   ~(word_reg[N-1:1] ^ word_reg[N-2:0])};
+  wire [N-1:0] kept       = illegal_cw_d ? agree : {agree[N-2:0], 1'b0};
   // A slide keeps the law's own bit at the end it leaves: inv(word_up) is the bit
   // slid out, word_reg[N-1], and fwd(word_down) is word_reg[0] (every word is a window
   // of the disc; the proofs check it).
@@ -343,8 +363,11 @@ module prenc_track_word #(
     end
     primed_next = primed_reg | full_after;
     if (illegal_d && !law_reg) begin
-      // The readings are in doubt (the count may be a slot off), not the window's place.
-      known_next  = {N{1'b0}};
+      // The count may be a slot off: a bit stays known where the bit that would take
+      // its place the other way (index - 1 when the count took the CW step) is known
+      // and equal to it; none when this clock slides the window or writes a reading.
+      // The rest are in doubt, not the window's place.
+      known_next  = (KEEP == 0 || slide_up || slide_down || write_raw) ? {N{1'b0}} : kept;
       ext_lo_next = {EW{1'b0}};
       ext_hi_next = {EW{1'b0}};
       primed_next = 1'b0;
@@ -382,6 +405,7 @@ module prenc_track_word #(
   always @(posedge clk) begin
     strobe_d       <= strobe_ahead;
     illegal_d      <= illegal & ~rst;
+    illegal_cw_d   <= illegal_cw & ~rst;
     head_d         <= head & ~rst;
     slot_d         <= rst ? {N{1'b0}} : slot;
     idle_reg       <= idle_ahead;
@@ -696,24 +720,29 @@ module prenc_track_word #(
   // the head's last reading at its slot, and the ext_hi (ext_lo) slots above (below)
   // the window were last read as the disc continues (precedes) the window. Readings
   // are recorded as the design takes them (raw strobes on clocks without a move) and
-  // forgotten where it forgets them (flush, demotion, an illegal step in raw mode). A
-  // realignment (the judge found the count one slot off) moves them one count with
-  // the window: down for realign_up, up for realign_down.
-  reg [F_L-1:0] f_rd;   // the last reading at each count
-  reg [F_L-1:0] f_has;  // read since the last clear
+  // forgotten where it forgets them (flush, demotion). A realignment (the judge found
+  // the count one slot off) moves them one count with the window: down for
+  // realign_up, up for realign_down. An illegal step in raw mode keeps a count's
+  // reading only where the reading at the count before it (CW; after it, CCW) is
+  // known and equal: the reading that would be there if the count is a slot off.
+  reg  [F_L-1:0] f_rd;   // the last reading at each count
+  reg  [F_L-1:0] f_has;  // read since the last clear
+  wire [F_L-1:0] f_rot_rd  = (idle && pending_reg[1]) ? {f_rd[0], f_rd[F_L-1:1]} :
+                             (idle && pending_reg[0]) ? {f_rd[F_L-2:0], f_rd[F_L-1]} : f_rd;
+  wire [F_L-1:0] f_rot_has = (idle && pending_reg[1]) ? {f_has[0], f_has[F_L-1:1]} :
+                             (idle && pending_reg[0]) ? {f_has[F_L-2:0], f_has[F_L-1]} : f_has;
+  wire           f_wr      = !ev_up && !ev_down && strobe_d && !law_reg;
+  wire [F_L-1:0] f_at      = {{(F_L - 1){1'b0}}, f_wr} << slot_d;
+  wire [F_L-1:0] f_new_rd  = (f_rot_rd & ~f_at) | (f_at & {F_L{head_d}});
+  wire [F_L-1:0] f_new_has = f_rot_has | f_at;
+  wire [F_L-1:0] f_nb_rd   = illegal_cw_d ? {f_new_rd[F_L-2:0], f_new_rd[F_L-1]}   // count - 1
+                                          : {f_new_rd[0], f_new_rd[F_L-1:1]};    // count + 1
+  wire [F_L-1:0] f_nb_has  = illegal_cw_d ? {f_new_has[F_L-2:0], f_new_has[F_L-1]}
+                                          : {f_new_has[0], f_new_has[F_L-1:1]};
   always @(posedge clk) begin
-    if (idle && pending_reg[1]) begin
-      f_rd  <= {f_rd[0], f_rd[F_L-1:1]};
-      f_has <= {f_has[0], f_has[F_L-1:1]};
-    end else if (idle && pending_reg[0]) begin
-      f_rd  <= {f_rd[F_L-2:0], f_rd[F_L-1]};
-      f_has <= {f_has[F_L-2:0], f_has[F_L-1]};
-    end
-    if (!ev_up && !ev_down && strobe_d && !law_reg) begin
-      f_rd[slot_d]  <= head_d;
-      f_has[slot_d] <= 1'b1;
-    end
-    if (rst || flush || demote || (illegal_d && !law_reg)) f_has <= {F_L{1'b0}};
+    f_rd  <= f_new_rd;
+    f_has <= (rst || flush || demote) ? {F_L{1'b0}} :
+             (illegal_d && !law_reg) ? (f_new_has & f_nb_has & ~(f_new_rd ^ f_nb_rd)) : f_new_has;
   end
   function automatic [1:0] f_read;  // {read since the last clear, last reading} at count c
     input [N-1:0] c;  // modulo 2^N
@@ -782,6 +811,7 @@ module prenc_track_word #(
       cover (f_slide_up && law_reg);
       cover (f_slide_down && law_reg);
       cover (full_reg && !law_reg && span == 6'd3);
+      cover (illegal_d && !law_reg && known_next != {N{1'b0}});  // readings kept at a missed state
       cover (demote);
       cover (supported && f_law_strobe && mismatch);
     end

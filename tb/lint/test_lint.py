@@ -77,7 +77,7 @@ BAD_PARAMETERS = [
     ("prenc_board", "BISS_MT_BITS", 25), ("prenc_board", "BISS_HYBRID", 2),
     ("prenc_board", "BISS_TIMEOUT_US", 0), ("prenc_board", "SSI_HYBRID", 3), ("prenc_board", "HOST_LINK", 2),
     ("prenc_ssi", "WIDTH", 0), ("prenc_core", "SHIFT", 7), ("prenc_core", "HYPOTHESES", 2),
-    ("prenc_core", "CONV_REG", 2),
+    ("prenc_core", "CONV_REG", 2), ("prenc_track_word", "KEEP", 2),
     ("prenc_quadrature", "COUNT_WIDTH", 1), ("prenc_sampler", "HEAD_DELAY", 2),
     ("prenc_wb", "N", 25), ("prenc_wb", "FILTER", 70000),
     # the core's options, passed through the wrappers to the core's own checks

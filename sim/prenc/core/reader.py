@@ -84,8 +84,8 @@ class Reader:
         self.fsm = ModeFsm(code.n, lock_both=lock_both, lock_one=lock_one, dual_votes=dual_votes,
                            dual_span=dual_span, hypotheses=hypotheses)
         ext_max = max(self.fsm.lock_one, self.fsm.lock_both) - 1 + self.fsm.lock_extra
-        self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max),
-                       TrackWord(code, code.n - 1, score_up, score_limit, ext_max)]
+        self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max, keep=hypotheses),
+                       TrackWord(code, code.n - 1, score_up, score_limit, ext_max, keep=hypotheses)]
         self.j1 = JudgeInput()
         self.conv_reg = conv_reg  # CONV_REG = 1: the judge gets the offsets of the clock before
         self.off_before = [0, 0]
@@ -114,7 +114,7 @@ class Reader:
         flush, law_on, realign, dual, dual_cw = self._ctrl
         for h, t in enumerate(tracks):
             ev = TrackEvent(strobe=s.strobe, up=pos.up, down=pos.down, illegal=pos.illegal,
-                            head=s.head1 if h == 0 else s.head2)
+                            head=s.head1 if h == 0 else s.head2, illegal_cw=pos.illegal_cw)
             t.clock(ev, pos.slot, flush=flush[h], law_on=law_on[h], realign=realign,
                     dual=dual, dual_cw=dual_cw, rst=rst)
         # The track words apply each event a clock after the count: so do its flags.

@@ -69,19 +69,21 @@ def health_after_check(t, dual: int, dual_cw: int) -> tuple[int, int]:
 
 @dataclass
 class TrackEvent:
-    """One clock's input: at most one of strobe, up, down; illegal may come with up/down."""
+    """One clock's input: at most one of strobe, up, down; illegal may come with up/down.
+    `illegal_cw`: the way the count took at an illegal transition (two quarters CW)."""
 
     strobe: int = 0
     up: int = 0
     down: int = 0
     illegal: int = 0
     head: int = 0
+    illegal_cw: int = 0
 
 
 class TrackWord:
     def __init__(self, code: Code, head_offset: int, score_up: int = SCORE_UP,
                  score_limit: int = SCORE_LIMIT, ext_max: int | None = None, quiet_max: int | None = None,
-                 event_delay: bool = True):
+                 event_delay: bool = True, keep: bool = True):
         self.code = code
         self.n = code.n
         self.mask = code.mask
@@ -114,6 +116,8 @@ class TrackWord:
         self.addr = 0           # what the converter reads: the word after this clock
         self.realign = 0        # pending index move after a hypothesis change: 0, +1 or -1
         self.event_delay = event_delay  # False: apply each event on its own clock (not the RTL)
+        self.keep = keep  # a missed state in raw mode keeps the readings right either way
+                          # (HYPOTHESES = 1); else it forgets them all
         self.ahead = (TrackEvent(), 0)  # the ports' event and slot, applied on the next clock
 
     def bit(self, word: int, i: int) -> int:
@@ -169,8 +173,10 @@ class TrackWord:
         mismatch = mismatch_lo = mismatch_hi = 0
         raw_checked = raw_changed = 0
         ext_lo, ext_hi, lowest = self.ext_lo, self.ext_hi, 1 << (n - 1)  # index 0 is the MSB
+        rewritten = 0  # this clock's event slides the window or writes a reading
         if ev.up:
             if index == n - 1:
+                rewritten = 1
                 word = ((word << 1) & self.mask) | int(self.code.forward_bit(word))
                 ext_lo = min(ext_lo + 1, self.ext_max) if known & lowest else 0
                 known = ((known << 1) & self.mask) | int(ext_hi > 0)
@@ -179,6 +185,7 @@ class TrackWord:
                 index += 1
         elif ev.down:
             if index == 0:
+                rewritten = 1
                 word = (word >> 1) | (int(self.code.inverse_bit(word)) << (n - 1))
                 ext_hi = min(ext_hi + 1, self.ext_max) if known & 1 else 0
                 known = (known >> 1) | (lowest if ext_lo > 0 else 0)
@@ -203,14 +210,26 @@ class TrackWord:
                 raw_checked, raw_changed = int(self.primed and not law_on), int(changed)
                 word = (word & ~b & self.mask) | (b if ev.head else 0)
                 known |= b
+                rewritten = 1
         if law:
             ext_lo = ext_hi = 0
         primed = int(self.primed or (known == self.mask))
         if ev.illegal and not law:
-            # The readings are in doubt (the count may be a slot off), not the window's
-            # place: it keeps sliding with the count, so a lock decided on the clock
-            # before still finds its word, and the judge keeps both ways open.
-            known, ext_lo, ext_hi, primed = 0, 0, 0, 0
+            # The count may be a slot off: the other way, each reading belongs one slot
+            # further along the count's way (index + 1 when the count took the CW step).
+            # A bit stays known only where the bit that would take its place (index - 1
+            # when CW) is known and equal to it: right whichever way the disc went
+            # (docs/architecture.md); none when the same clock slides the window or
+            # writes a reading. The rest are in doubt, not the window's place: it keeps
+            # sliding with the count, so a lock decided on the clock before still finds
+            # its word, and the judge keeps both ways open.
+            if rewritten or not self.keep:
+                known = 0
+            elif ev.illegal_cw:
+                known &= (known >> 1) & ~(word ^ (word >> 1)) & self.mask
+            else:
+                known &= (known << 1) & ~(word ^ (word << 1)) & self.mask
+            ext_lo, ext_hi, primed = 0, 0, 0
         if law_on:
             law, score = 1, 0
         if flush or demote:  # the score stays: it is the head's record, not the window's

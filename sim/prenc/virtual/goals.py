@@ -69,6 +69,20 @@ def reversing(t: Trajectory, speed: float, clocks: int, rng: np.random.Generator
     return t
 
 
+def missed_states_walk(n: int, seed: int, clocks: int,
+                       slots_per_reversal: float = 13) -> tuple[Trajectory, EncoderRun]:
+    """The missed-states scenario of a given length: a walk at 1/96 slot per clock from a
+    random start, reversing every `slots_per_reversal` slots on average, with 3 % of its
+    slot passes missing a quadrature state anywhere in the run (the table's fall after
+    10,000 clocks)."""
+    start = float(np.random.default_rng(seed).uniform(0, 1 << n))
+    t = reversing(Trajectory(clk_hz=1, start=start), SLOW, clocks, np.random.default_rng(seed + 1),
+                  rate=SLOW / slots_per_reversal)
+    passes = int(np.count_nonzero(np.diff(VirtualEncoder(Disc(n)).run(t).slot) != 0))
+    missed = MissedQuadratureState(count=max(1, round(0.03 * passes)), seed=seed + 100)
+    return t, VirtualEncoder(Disc(n), [missed]).run(t)
+
+
 def goals(n: int = 10, seed: int = 3) -> list[Goal]:
     length = 1 << n
     rng = np.random.default_rng(seed)

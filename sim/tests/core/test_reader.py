@@ -80,6 +80,35 @@ def test_span_counts_distinct_slots_not_strobes():
     assert t.span == 4
 
 
+@pytest.mark.parametrize("cw", [1, 0])
+def test_a_missed_state_while_acquiring_keeps_the_readings_right_either_way(cw):
+    """At an illegal transition in raw mode the count may be a slot off: the other way,
+    the reading at index j belongs at j + 1 (the count took the CW step) or j - 1. A
+    reading stays known only where the one that would take its place is known and
+    equal, so the window is the disc's whichever way the disc went: filled on from
+    either truth, it becomes the disc's window there (docs/architecture.md)."""
+    import copy
+
+    code, t = clocked_track(8)
+    n, seq = code.n, code.sequence
+    bit = lambda s: int(seq[(s + 40) % code.length])  # noqa: E731 (slot 40 + j: runs of both kinds)
+    feed(code, t, list(range(0, n - 1)), bit)  # n - 1 of the window's n slots read
+    before = t.known
+    t.clock(TrackEvent(illegal=1, illegal_cw=cw), (n - 2) & code.mask)
+    other = -1 if cw else 1  # the other way, index j's slot is j + other
+    known = lambda w, j: 0 <= j < n and bool(w & (1 << (n - 1 - j)))  # noqa: E731
+    for j in range(n):
+        kept = known(before, j) and known(before, j + other) and bit(j) == bit(j + other)
+        assert known(t.known, j) == kept, j
+        if kept:
+            assert t.bit(t.word, j) == bit(j) == bit(j + other)
+    assert t.known and not t.full and t.span == 0
+    for truth in (0, other):  # read on the slots in doubt, the disc where the count is + truth
+        u = copy.deepcopy(t)
+        feed(code, u, list(range(n - 2, -1, -1)) + list(range(1, n)), lambda s: bit(s + truth))
+        assert u.full and all(u.bit(u.word, j) == bit(j + truth) for j in range(n)), truth
+
+
 def test_a_reading_that_changes_the_word_empties_the_span():
     code, t = clocked_track()
     seq = code.sequence
