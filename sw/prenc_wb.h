@@ -22,11 +22,11 @@ extern "C" {
 #define PRENC_WB__VERSION__PATCH_bm 0xff
 #define PRENC_WB__VERSION__PATCH_bp 0
 #define PRENC_WB__VERSION__PATCH_bw 8
-#define PRENC_WB__VERSION__PATCH_reset 0x1
+#define PRENC_WB__VERSION__PATCH_reset 0x0
 #define PRENC_WB__VERSION__MINOR_bm 0xff00
 #define PRENC_WB__VERSION__MINOR_bp 8
 #define PRENC_WB__VERSION__MINOR_bw 8
-#define PRENC_WB__VERSION__MINOR_reset 0x14
+#define PRENC_WB__VERSION__MINOR_reset 0x15
 #define PRENC_WB__VERSION__MAJOR_bm 0xff0000
 #define PRENC_WB__VERSION__MAJOR_bp 16
 #define PRENC_WB__VERSION__MAJOR_bw 8

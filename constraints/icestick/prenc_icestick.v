@@ -21,7 +21,7 @@
 //
 // Parameters: N, TAPS, FILTER, ROM_FILE, BAUD as prenc_board; HOST_LINK and HYPOTHESES
 // as prenc_board and prenc_core, with the iCEstick's defaults (0 and 0). The HX1K's 16
-// block RAMs (64 kbit) hold the ROM up to N = 11 (1,258 LC at N = 11).
+// block RAMs (64 kbit) hold the ROM up to N = 11 (1,263 LC at N = 11).
 
 `resetall
 `timescale 1ns / 1ps
