@@ -448,14 +448,15 @@ def placer_seeds(text: str) -> list[int]:
 
 def core_build(target: str, bits: int, freq_mhz: float, out: Path, require_timing: bool = True,
                top: str = "prenc_core", seed: int = 1, parameters: dict[str, int] | None = None,
-               sources: list[Path] | None = None) -> Result:
+               sources: list[Path] | None = None, seeds: tuple[int, ...] | None = None) -> Result:
     """The reader core alone (or in its few-pin harness, or prenc_wb, the core on Wishbone), placed
     and routed; `parameters` sets more of the top's parameters (e.g. {"HYPOTHESES": 0});
-    `sources` replaces the top's file list (scripts/fmax_ceiling.py swaps in stubs)."""
+    `sources` replaces the top's file list (scripts/fmax_ceiling.py swaps in stubs). `seeds`:
+    the placer seeds to try in turn until one meets timing, as for a board (default: `seed`)."""
     rom = rom_for(bits, out)
     params = {"N": bits, "TAPS": taps_mask(check_taps(bits)), "ROM_FILE": rom, **(parameters or {})}
     return build(top, sources or file_list(list_file(top)), target, params, freq_mhz, out, bitstream=False,
-                 require_timing=require_timing, seeds=(seed,))
+                 require_timing=require_timing, seeds=seeds or (seed,))
 
 
 def matrix_build(n: int, target: str, freq_mhz: float, out: Path, table: str = "generator",

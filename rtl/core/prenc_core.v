@@ -627,7 +627,8 @@ module prenc_core #(
     if (f_move == 2'd2 && !f_was_valid && f_since_rst >= 4'd4) f_missed_acquiring <= 1'b1;
     if (f_past_valid && !rst) cover (pos_valid && f_missed_acquiring);
   end
-`else
+`endif
+`ifndef F_DISC
   // From the pins: the first lock on both heads, on one head, the hypotheses of a
   // missed state, a misread survived (cover traces: the whole reader at work).
   always @(posedge clk) begin
@@ -640,8 +641,8 @@ module prenc_core #(
       cover (mode == 3'd1 && (track1_errors != 0 || track2_errors != 0));
     end
   end
-`endif  // F_DISC
-`endif  // FORMAL
+`endif
+`endif
 
 endmodule
 

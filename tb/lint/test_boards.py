@@ -156,9 +156,12 @@ def test_the_ulx3s_with_the_calibration_table_meets_its_clock():
                                               ("ecp5-25k", "prenc_wb", "ulx3s")])
 def test_the_wishbone_core_meets_the_boards_clocks(target, top, board):
     """prenc_wb at the design clock of the board of its family (iCEBreaker 30 MHz, ULX3S
-    50 MHz); on the 48-pin UP5K through the harness that gives it one pin out."""
+    50 MHz); on the 48-pin UP5K through the harness that gives it one pin out. Placed
+    with the board seeds in turn, as `make synth` places a board (on the UP5K seed 1 gave
+    29.6 MHz at 0.21.0, seeds 2 to 4 31.9 to 33.3)."""
     out = SIM_BUILD / "boards" / f"{top}-{target}"
-    result = synth.core_build(target, 10, synth.BOARDS[board].clock_mhz, out, top=top)
+    result = synth.core_build(target, 10, synth.BOARDS[board].clock_mhz, out, top=top,
+                              seeds=synth.BOARD_SEEDS)
     assert result.timing_met
     assert result.used(synth.TARGETS[target].brams)[0] >= 1, "the ROM must be in block RAM"
 

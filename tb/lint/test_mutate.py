@@ -16,17 +16,17 @@ def tasks(name: str) -> list[str]:
 
 
 def test_a_mutant_runs_every_task_that_asserts_and_no_cover():
-    # per-task modes: the core's bounded tasks, the disc's included; its cover is left out
+    # per-task modes: the core's bounded tasks, the disc's included; its covers are left out
     assert tasks("prenc_core") == ["disc", "bmc"]
     assert tasks("prenc_mode_fsm") == ["prove", "prove_h0"]
     # one mode for every task (`mode prove` without a task prefix)
     assert tasks("prenc_converter") == ["prove"]
     # --covers: the cover tasks as well
     core = mutate.sections((mutate.FORMAL / "prenc_core.sby").read_text())
-    assert mutate.checking_tasks(core, covers=True) == ["disc", "bmc", "cover"]
+    assert mutate.checking_tasks(core, covers=True) == ["disc", "bmc", "cover", "disc_cover"]
     # a mutant runs those that read the design as the listing task does (the first):
-    # the core's disc, which reads it with -DF_DISC, and not bmc or cover
-    assert mutate.same_netlist_tasks(core, covers=True) == ["disc"]
+    # the core's disc and disc_cover, which read it with -DF_DISC, and not bmc or cover
+    assert mutate.same_netlist_tasks(core, covers=True) == ["disc", "disc_cover"]
     fsm = mutate.sections((mutate.FORMAL / "prenc_mode_fsm.sby").read_text())
     assert mutate.same_netlist_tasks(fsm) == ["prove"]  # prove_h0 sets HYPOTHESES 0
 
