@@ -1188,9 +1188,7 @@ def kept_readings(n: int, seeds: range) -> None:
             g = Goal("missed_states", "", 0.80, None, t)
             reader = Reader(Code(n), 0)
             kept.append(measure(g, reader, n, 0, enc).availability)
-            reader = Reader(Code(n), 0)
-            for track in reader.tracks:
-                track.keep = False
+            reader = Reader(Code(n), 0, keep=False)
             emptied.append(measure(g, reader, n, 0, enc).availability)
         cells.append(f"every {slots} slots {np.mean(kept):.3f} against {np.mean(emptied):.3f} "
                      f"(+{np.mean(kept) - np.mean(emptied):.3f}: {sum(a > b for a, b in zip(kept, emptied))} "

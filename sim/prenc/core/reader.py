@@ -20,6 +20,9 @@ next values, as prenc_quadrature's *_next outputs give them to the RTL's).
 of this clock (prenc_core with CONV_REG = 0), or with `conv_reg` the clock before's
 (CONV_REG = 1), and decides the same either way: it reads an offset only while the
 track is steady (the same offset as on the clock before).
+`hypotheses` is HYPOTHESES; `keep` (default: as `hypotheses`) is the track words' KEEP,
+which the core sets to HYPOTHESES: False empties the windows at a missed state while
+acquiring, for the bench's and the tests' comparisons.
 Latency: outputs show the pins LATENCY + FILTER clocks earlier.
 """
 
@@ -72,7 +75,7 @@ class Reader:
     def __init__(self, code: Code, filter_len: int = 0, lock_both: int | None = None,
                  lock_one: int | None = None, dual_votes: int = DUAL_VOTES,
                  dual_span: int = DUAL_SPAN, score_up: int = SCORE_UP, score_limit: int = SCORE_LIMIT,
-                 hypotheses: bool = True, conv_reg: bool = False):
+                 hypotheses: bool = True, conv_reg: bool = False, keep: bool | None = None):
         self.code = code
         self.n = code.n
         self.mask = code.mask
@@ -84,8 +87,9 @@ class Reader:
         self.fsm = ModeFsm(code.n, lock_both=lock_both, lock_one=lock_one, dual_votes=dual_votes,
                            dual_span=dual_span, hypotheses=hypotheses)
         ext_max = max(self.fsm.lock_one, self.fsm.lock_both) - 1 + self.fsm.lock_extra
-        self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max, keep=hypotheses),
-                       TrackWord(code, code.n - 1, score_up, score_limit, ext_max, keep=hypotheses)]
+        keep = hypotheses if keep is None else keep
+        self.tracks = [TrackWord(code, 0, score_up, score_limit, ext_max, keep=keep),
+                       TrackWord(code, code.n - 1, score_up, score_limit, ext_max, keep=keep)]
         self.j1 = JudgeInput()
         self.conv_reg = conv_reg  # CONV_REG = 1: the judge gets the offsets of the clock before
         self.off_before = [0, 0]

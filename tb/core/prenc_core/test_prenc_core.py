@@ -134,9 +134,7 @@ async def missed_state_while_acquiring(dut):
     model = Reader(Code(n), filter_len, hypotheses=hypotheses(dut))
     m_valid = np.array([o.valid for o in model.run(enc, RESET)])
     assert np.array_equal(valid, m_valid), f"RTL and model differ at clock {int(np.argmax(valid != m_valid))}"
-    emptied = Reader(Code(n), filter_len, hypotheses=hypotheses(dut))
-    for t in emptied.tracks:
-        t.keep = False
+    emptied = Reader(Code(n), filter_len, hypotheses=hypotheses(dut), keep=False)
     e_valid = np.array([o.valid for o in emptied.run(enc, RESET)])
     dut._log.info("missed states while acquiring (N=%d, FILTER=%d): first valid at clock %d, %d with emptied "
                   "windows", n, filter_len, int(np.argmax(valid)), int(np.argmax(e_valid)))
