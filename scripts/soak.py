@@ -75,8 +75,10 @@ def instrument(seeds: list[int], jobs: int) -> int:
     for r in results:
         verdict = "ok" if not r.failures else "FAILED: " + "; ".join(r.failures[:3])
         vel = "-" if math.isnan(r.velocity_rms) else f"{r.velocity_rms:.2f} %"
-        print(f"seed {r.seed}: {r.label}; {r.clocks} clocks; fine position {r.fine_rms:.4f} / {r.fine_max:.3f} "
-              f"slot (RMS / max), velocity at steady speeds {vel} RMS: {verdict}")
+        fine = ("never valid (the core never locked)" if math.isnan(r.fine_rms)
+                else f"{r.fine_rms:.4f} / {r.fine_max:.3f} slot (RMS / max)")
+        print(f"seed {r.seed}: {r.label}; {r.clocks} clocks; fine position {fine}, "
+              f"velocity at steady speeds {vel} RMS: {verdict}")
         failed += bool(r.failures)
     print(f"instrument soak: {len(results)} draws, {failed} failed, {time.monotonic() - start:.0f} s")
     return 1 if failed else 0
