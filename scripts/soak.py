@@ -18,7 +18,7 @@ the last step's sign and never motion at a stop. About 6 s a draw on one core.
 With --velocity each seed is one random run of changes of motion (steps, ramps, stops,
 reversals, changes in quick succession) through the velocity's model, on the ideal disc
 and on the calibrated printed disc (prenc.virtual.velocity_soak), judged against the
-bound of docs/fine.md: back within 0.05 % within 10 windows or 8 edge periods of the new
+bound of docs/fine.md: back within 0.05 % within 11 windows or 8 edge periods of the new
 speed (18 or 22 calibrated), and between the last speeds until then. About 12 s a run on
 one core.
 

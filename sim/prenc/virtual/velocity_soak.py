@@ -39,7 +39,7 @@ from .edge_timing import true_corrections
 from .trajectory import Trajectory
 
 DISCS = ("ideal", "calibrated")
-BOUNDS = {"ideal": (10, 8), "calibrated": (18, 22)}   # (windows, edge periods): docs/fine.md
+BOUNDS = {"ideal": (11, 8), "calibrated": (18, 22)}   # (windows, edge periods): docs/fine.md
 WITHIN = 0.0005                                      # 0.05 %
 
 
