@@ -14,25 +14,29 @@
 //                edge's correction, signed by the direction; 2^-12 quarter)
 //   ltime, lwidth  the last step's clock, and the width less one of the quarter it
 //                entered (c_hi - c_lo, clamped to -1/2 .. 3/4 quarter)
-//   speed, accel the speed (2^-32 quarter per clock, below 1/2) integrates the
-//                acceleration (2^-32 quarter per clock^2, signed) every clock and
-//                stops at 0 (or out of range); the program loads them (OUT)
-// A reversal or an illegal transition restarts the program (speed and acceleration 0;
-// an illegal transition also drops `valid` and the step held; a reversal's step is
-// held: the first window's anchor).
+//   tick, due    every K = 64 clocks one more update of the speed is due (up to 7):
+//                the program, which keeps the speed and its acceleration, integrates
+//                one per due tick (FLAG TICK 0) when idle; a fit's load restarts the
+//                tick at K / 2 (FLAG TICK 1)
+//   velocity     the output: the program's OUT (the signed speed, SIGN)
+// A reversal or an illegal transition restarts the program (the velocity 0; an illegal
+// transition also drops `valid` and the step held; a reversal's step is held: the first
+// window's anchor).
 //
 // Engine instructions (prenc.fine.engine): LOAD, ADD, SUB (the operand: a word of the
-// register file, or with `special` one of now, stime, sposc, speed, ltime,
-// lwidth), HALF n (shift right), NUM (low <- acc, acc <- 0), DIV a n (n steps of
-// restoring division by a word; `abortable`: a step held stops it), MUL a n (n steps of
-// shift-and-add), QUOT (acc <- low, saturated to 2^31 - 1), STORE a, OUT (speed and
-// acceleration from acc), FLAG, DONE (the step held is done), JMP (conditions: a step
-// held, acc negative, the flags). The register file's word an instruction reads is
+// register file, or with `special` one of now, stime, sposc, ltime, lwidth), HALF n
+// (shift right), NUM (low <- acc, acc <- 0), DIV a n (n steps of restoring division by
+// a word; `abortable`: a step held, or an update due while the speed accelerates, stops
+// it), MUL a n (n steps of shift-and-add), QUOT (acc <- low, saturated to 2^31 - 1),
+// STORE a, OUT (the velocity from acc), SIGN (acc <- -acc unless the last step was CW),
+// FLAG (the flags; TICK), DONE (the step held is done), JMP (conditions: a step held,
+// acc negative, the flags, an update due). The register file's word an instruction reads is
 // read the clock before, at the address of the instruction fetched (a program never
 // reads a word the instruction before writes).
 //
-// Latency: a fitted speed is loaded 256 clocks after the step that closed its window,
-// and extrapolated to that clock; the velocity output a clock later.
+// Latency: the output shows a fitted speed 257 clocks after the step that closed its
+// window, extrapolated to the 256th (LATENCY); an update of an accelerating speed up to
+// K clocks late while the program is idle, and after its window's work when it is not.
 //
 // Parameters
 //   WINDOW   the window, in clocks (1024 at 30 MHz: 34 us), 32..2^30
@@ -89,7 +93,6 @@ module prenc_velocity #(
   // Fixed point (prenc.fine.program): speeds 2^-32 quarter per clock, the acceleration
   // 2^-32 per clock^2, places 2^-12 quarter.
   localparam integer CAL_FRAC    = 12;
-  localparam integer SB          = 31;            // speed: below 2^-1 quarter per clock
   localparam integer CB          = 20;            // count
   localparam signed [16:0] WIDTH_LO = -17'sd2048; // the quarter's width less one, clamped
   localparam signed [16:0] WIDTH_HI = 17'sd3072;
@@ -102,7 +105,9 @@ module prenc_velocity #(
   localparam [31:0] C_WINDOW   = WINDOW;
   localparam [31:0] C_SHORT    = WINDOW / 2;
   localparam [31:0] C_QUARTERS = (CYCLES == 1) ? (1 << CAL_FRAC) : (3 << CAL_FRAC) / 2;
-  localparam [31:0] C_LEVEL0   = (5 << CAL_FRAC) / 4 + 2 * EDGE;
+  localparam integer LEVEL_SHIFT = 17;           // LEVEL (below 2^14) 17 bits up: the
+                                                 // overdue bound's division takes 35 steps
+  localparam [31:0] C_LEVEL0   = ((5 << CAL_FRAC) / 4 + 2 * EDGE) << LEVEL_SHIFT;
   localparam [31:0] C_2DELTA   = ((CAL == 1) ? (32'd2 << 22) : 32'd0)   // 2 x 2^-10 quarter
                                + (EDGE << 21);                        // 2 x EDGE, 2^-32
   localparam [31:0] C_CYCLE    = (CYCLES == 1) ? (7 << CAL_FRAC) / 2 : 0;
@@ -116,11 +121,13 @@ module prenc_velocity #(
   localparam [31:0] C_SETTLED  = 32'd16;
   localparam [31:0] C_TREND    = (CAL == 1 && CYCLES == 1) ? 32'd6 : 32'd0;
 
-  // Opcodes (prenc.fine.engine.OPS), specials, out kinds, conditions.
+  // Opcodes (prenc.fine.engine.OPS; QUOT, 8, is the ROM's `quot` control), specials,
+  // out kinds, conditions.
   localparam [3:0] OP_LOAD = 4'd1, OP_ADD = 4'd2, OP_SUB = 4'd3, OP_HALF = 4'd4,
-                   OP_NUM = 4'd5, OP_DIV = 4'd6, OP_MUL = 4'd7, OP_QUOT = 4'd8,
+                   OP_NUM = 4'd5, OP_DIV = 4'd6, OP_MUL = 4'd7,
                    OP_STORE = 4'd9, OP_OUT = 4'd10, OP_FLAG = 4'd11, OP_DONE = 4'd12,
-                   OP_JMP = 4'd13, OP_WAIT = 4'd14;
+                   OP_JMP = 4'd13, OP_WAIT = 4'd14, OP_SIGN = 4'd15;
+  localparam [5:0] K_HALF = 6'd32;   // the tick: K = 64 clocks (prenc.fine.program.K)
 
   // The hardware around the engine.
   reg [31:0]        now_reg;
@@ -130,16 +137,16 @@ module prenc_velocity #(
   reg               pend_reg;
   reg [8:0]         age_reg;        // clocks since the step held (saturating)
   reg [31:0]        ltime_reg;
-  reg [15:0]        lwidth_reg;
+  reg [31-LEVEL_SHIFT:0] lwidth_reg;   // (the width within -2048 .. 3072: 15 bits)
   reg               cw_reg;
   reg               moved_reg;
-  reg [SB-1:0]      speed_reg;
-  reg signed [31:0] accel_reg;
+  reg [5:0]         tick_reg;       // clocks to the next due update, modulo K
+  reg [2:0]         due_reg;        // updates due
   reg               valid_reg;
   reg signed [31:0] velocity_reg;
   // The engine.
-  reg [7:0]         pc_reg;
-  wire [28:0]       ins;            // the instruction at pc_reg (the ROM's registered word)
+  reg [8:0]         pc_reg;
+  wire [30:0]       ins;            // the instruction at pc_reg (the ROM's registered word)
   reg [31:0]        acc_reg;
   reg [31:0]        low_reg;
   reg [7:0]         left_reg;       // steps left of DIV, MUL, HALF, while they run
@@ -150,6 +157,7 @@ module prenc_velocity #(
   reg               have_reg;
   reg               bnd_reg;
   reg               stale_reg;      // (a window has passed the test since a change)
+  reg               accel_reg;      // (the speed integrates an acceleration)
   // The register file (block RAM). A program never reads a word as it is written
   // (prenc.fine.engine.check), so the block RAM needs no bypass for it (no_rw_check).
   (* no_rw_check *)
@@ -176,17 +184,19 @@ module prenc_velocity #(
   end
 
   // The instruction's fields.
-  wire        stepping  = ins[28];   // DIV or MUL   (the adder's controls, decoded in the
-  wire        invert    = ins[27];   // SUB or DIV    ROM)
-  wire        mul       = ins[26];   // MUL
-  wire        load      = ins[25];   // LOAD
-  wire [3:0]  op        = ins[24:21];
-  wire        abortable = ins[19];
-  wire [4:0]  a         = ins[18:14];
-  wire [7:0]  n         = ins[13:6];
+  wire        stepping  = ins[30];   // DIV or MUL          (the adder's controls, decoded
+  wire        invert    = ins[29];   // SUB, DIV or SIGN     in the ROM)
+  wire        mul       = ins[28];   // MUL
+  wire        load      = ins[27];   // LOAD
+  wire        quot      = ins[26];   // QUOT
+  wire [3:0]  op        = ins[25:22];
+  wire        abortable = ins[20];
+  wire [4:0]  a         = ins[19:15];
+  wire [8:0]  target    = ins[14:6];  // a jump's target; else n, a count or a flag's value
+  wire [7:0]  n         = target[7:0];
   wire        next_s    = ins[5];     // the operand of the instruction after this one in the
   wire [4:0]  next_a    = ins[4:0];   // program: a special and its number, or a word's address
-  wire        unused_special = ins[20];   // (this instruction's: next_s of the one before)
+  wire        unused_special = ins[21];   // (this instruction's: next_s of the one before)
 
   // The operand: the register file's word, or the special, both fetched the clock before
   // (DIV's and MUL's: always the register file's).
@@ -198,17 +208,20 @@ module prenc_velocity #(
   wire        taking    = stepping && !going_reg;    // DIV's, MUL's first clock: no step
   wire        stay      = (iterates && (taking || left_now != 8'd1)) ||
                           ((op == OP_WAIT) && (age_reg < {1'b0, n}));
-  wire        abort     = (op == OP_DIV) && abortable && pend_reg;
+  wire        due       = (due_reg != 3'd0) && accel_reg;   // an update of the speed
+  wire        abort     = (op == OP_DIV) && abortable && (pend_reg || due);
 
   // One adder: LOAD 0 + operand, ADD acc + operand, SUB ~(~acc + operand) = acc -
-  // operand, a division's step ~(~shifted + divisor) = shifted - divisor (it fits
-  // without a carry), a multiplication's shifted + operand (when low's top bit is 1).
+  // operand, SIGN ~acc + 1 = -acc (operand C_ONE; against the CW direction), a
+  // division's step ~(~shifted + divisor) = shifted - divisor (it fits without a
+  // carry), a multiplication's shifted + operand (when low's top bit is 1).
   // The inversions are on the accumulator's side, off the register file's path. While
   // DIV and MUL step, the register file reads their own operand again (it holds still:
   // nothing is stored meanwhile) and fetches the next instruction's on their last step.
   wire [31:0] shifted   = {acc_reg[30:0], stepping & !mul & low_reg[31]};
   wire [31:0] add_a     = stepping ? (mul ? shifted : ~shifted)
-                        : load ? 32'd0 : invert ? ~acc_reg : acc_reg;
+                        : load ? 32'd0 : quot ? (ovf_reg ? 32'h7fff_ffff : low_reg)
+                        : invert ? ~acc_reg : acc_reg;
   wire [32:0] sum       = {1'b0, add_a} + {1'b0, operand};
   wire        fits      = !sum[32];   // shifted >= divisor
   wire        high_step = (op == OP_DIV) && going_reg && !abort && (left_reg > 8'd31);
@@ -218,7 +231,8 @@ module prenc_velocity #(
   // The accumulator's next value: the adder's result, the shifted accumulator (a
   // division's or a multiplication's step that does not add), or as the op says.
   wire        stepping_now = going_reg && ((op == OP_MUL) || ((op == OP_DIV) && !abort));
-  wire        adds         = (op == OP_LOAD) || (op == OP_ADD) || (op == OP_SUB) ||
+  wire        adds         = (op == OP_LOAD) || (op == OP_ADD) || (op == OP_SUB) || quot ||
+                             ((op == OP_SIGN) && !cw_reg) ||
                              (stepping_now && ((op == OP_MUL) ? low_reg[31] : fits));
   reg  [31:0] acc_next;
   always @(*) begin
@@ -227,7 +241,6 @@ module prenc_velocity #(
     else if (stepping_now) acc_next = shifted;
     else if (op == OP_HALF) acc_next = {acc_reg[31], acc_reg[31:1]};
     else if (op == OP_NUM) acc_next = 32'd0;
-    else if (op == OP_QUOT) acc_next = ovf_reg ? 32'h7fff_ffff : low_reg;
   end
 
   // The conditions.
@@ -245,7 +258,11 @@ module prenc_velocity #(
       4'd8:    taken = bnd_reg;
       4'd9:    taken = !bnd_reg;
       4'd10:   taken = stale_reg;
-      default: taken = !stale_reg;
+      4'd11:   taken = !stale_reg;
+      4'd12:   taken = accel_reg;
+      4'd13:   taken = !accel_reg;
+      4'd14:   taken = due;
+      default: taken = !due;
     endcase
   end
 
@@ -253,13 +270,13 @@ module prenc_velocity #(
   // one in the program is fetched meanwhile (a jump's target, where an abort or a
   // restart goes, reads none: the program is so written).
   wire        restart = illegal || (step && moved_reg && (step_cw != cw_reg));
-  wire [7:0]  restart_pc;
-  reg  [7:0]  pc_next;
+  wire [8:0]  restart_pc;
+  reg  [8:0]  pc_next;
   always @(*) begin
     pc_next = pc_reg + 1'b1;
-    if (abort) pc_next = 8'd0;
+    if (abort) pc_next = 9'd0;
     else if (stay) pc_next = pc_reg;
-    else if (op == OP_JMP && taken) pc_next = n;
+    else if (op == OP_JMP && taken) pc_next = target;
     if (restart || rst) pc_next = restart_pc;
   end
   prenc_velocity_program u_program (
@@ -283,18 +300,18 @@ module prenc_velocity #(
       3'd0:    spec_reg <= now_reg;
       3'd1:    spec_reg <= stime_reg;
       3'd2:    spec_reg <= sposc_reg;
-      3'd3:    spec_reg <= {1'b0, speed_reg};
-      3'd4:    spec_reg <= ltime_reg;
-      default: spec_reg <= {{16{lwidth_reg[15]}}, lwidth_reg};
+      3'd3:    spec_reg <= ltime_reg;
+      default: spec_reg <= {lwidth_reg, {LEVEL_SHIFT{1'b0}}};
     endcase
   end
 
-  // The speed integrates the acceleration and stops at 0 (or out of range); OUT loads them.
-  wire [32:0] integrated = {2'b00, speed_reg} + {accel_reg[31], accel_reg};
-  wire        to_zero    = integrated[32] || integrated[31];   // below 0, or 2^31 and above
-  wire        out        = (op == OP_OUT);
-  wire        out_speed  = out && (a[1:0] != 2'd2);
-  wire        speed_zero = out_speed ? acc_reg[31] : to_zero;   // (and a restart, rst)
+  // The tick: every K clocks one more update is due (up to 7); FLAG TICK 0 takes one,
+  // FLAG TICK 1 restarts it (K / 2 to go, none due).
+  wire        out      = (op == OP_OUT);
+  wire        tick     = (op == OP_FLAG) && (a[2:0] == 3'd5);
+  wire [2:0]  due_inc  = ((tick_reg == 6'd1) && (due_reg != 3'd7)) ? due_reg + 1'b1 : due_reg;
+  wire [2:0]  due_next = (tick && n[0]) ? 3'd0 :
+                         (tick && (due_inc != 3'd0)) ? due_inc - 1'b1 : due_inc;
 
   // The step held, and the quarter's width.
   wire        done     = (op == OP_DONE);
@@ -312,7 +329,7 @@ module prenc_velocity #(
   wire signed [16:0] width_w = (width_c < WIDTH_LO) ? WIDTH_LO : (width_c > WIDTH_HI) ? WIDTH_HI
                                                                                    : width_c;
   wire [15:0]        width   = width_w[15:0];   // (within -2048 .. 3072)
-  wire               unused_width = width_w[16];
+  wire               unused_width = &{1'b0, width_w[16], width[15]};
 
   always @(posedge clk) begin
     // The engine.
@@ -327,11 +344,13 @@ module prenc_velocity #(
         end
       end
       OP_FLAG: begin
-        case (a[1:0])
-          2'd0:    anch_reg <= n[0];
-          2'd1:    have_reg  <= n[0];
-          2'd2:    bnd_reg   <= n[0];
-          default: stale_reg <= n[0];
+        case (a[2:0])
+          3'd0:    anch_reg  <= n[0];
+          3'd1:    have_reg  <= n[0];
+          3'd2:    bnd_reg   <= n[0];
+          3'd3:    stale_reg <= n[0];
+          3'd4:    accel_reg <= n[0];
+          default: ;   // 5: TICK (below)
         endcase
       end
       default: ;
@@ -343,15 +362,14 @@ module prenc_velocity #(
       if (going_reg) low_reg <= {low_reg[30:0], 1'b0};
     end
 
-    // The output (the speed, negated as ~speed + 1 against the direction), the speed and
-    // the acceleration.
-    velocity_reg <= ({1'b0, speed_reg} ^ {32{~cw_reg}}) + {31'd0, ~cw_reg};
-    if (speed_zero) speed_reg <= {SB{1'b0}};
-    else speed_reg <= out_speed ? acc_reg[SB-1:0] : integrated[SB-1:0];
-    if (out && !out_speed) accel_reg <= acc_reg;
-    else if (to_zero || (out_speed && a[1:0] == 2'd0)) accel_reg <= 32'sd0;
-    if (out_speed) valid_reg <= 1'b1;
+    // The output, and the tick.
+    if (out) begin
+      velocity_reg <= acc_reg;
+      valid_reg    <= 1'b1;
+    end
     if (done) pend_reg <= 1'b0;
+    tick_reg <= (tick && n[0]) ? K_HALF : tick_reg - 1'b1;
+    due_reg  <= due_next;
 
     // The steps.
     now_reg <= now_reg + 1'b1;
@@ -359,7 +377,7 @@ module prenc_velocity #(
     if (step) begin
       count_reg  <= count_next;
       ltime_reg  <= now_reg;
-      lwidth_reg <= width;
+      lwidth_reg <= width[31-LEVEL_SHIFT:0];
       cw_reg     <= step_cw;
       moved_reg  <= 1'b1;
       if (capture) begin
@@ -372,8 +390,7 @@ module prenc_velocity #(
 
     // A restart.
     if (restart) begin
-      speed_reg <= {SB{1'b0}};
-      accel_reg <= 32'sd0;
+      velocity_reg <= 32'sd0;
       acc_reg   <= 32'd0;
       low_reg   <= 32'd0;
       going_reg <= 1'b0;
@@ -382,6 +399,7 @@ module prenc_velocity #(
       have_reg  <= 1'b0;
       bnd_reg   <= 1'b0;
       stale_reg <= 1'b0;
+      accel_reg <= 1'b0;
       if (illegal) begin
         valid_reg <= 1'b0;
         pend_reg  <= 1'b0;
@@ -397,11 +415,11 @@ module prenc_velocity #(
       pend_reg     <= 1'b0;
       age_reg      <= 9'd0;
       ltime_reg    <= 32'd0;
-      lwidth_reg   <= 16'd0;
+      lwidth_reg   <= {(32 - LEVEL_SHIFT){1'b0}};
       cw_reg       <= 1'b1;
       moved_reg    <= 1'b0;
-      speed_reg    <= {SB{1'b0}};
-      accel_reg    <= 32'sd0;
+      tick_reg     <= 6'd0;
+      due_reg      <= 3'd0;
       valid_reg    <= 1'b0;
       velocity_reg <= 32'sd0;
       acc_reg      <= 32'd0;
@@ -413,6 +431,7 @@ module prenc_velocity #(
       have_reg     <= 1'b0;
       bnd_reg      <= 1'b0;
       stale_reg    <= 1'b0;
+      accel_reg    <= 1'b0;
     end
   end
 

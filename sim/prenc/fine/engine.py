@@ -17,7 +17,8 @@ clocks as it has quotient bits). Registers:
           a program). DIV and MUL keep their operand (OP) from their first step.
     flags ANCH (the window has its anchor), HAVE (a speed and the last window are
           known), BND (an overdue edge bounds the speed), STALE (a window has passed
-          the constant-speed test since the speed last changed)
+          the constant-speed test since the speed last changed), ACCEL (the speed
+          integrates an acceleration: the program updates it when idle)
 
 Instructions (`op a n`): the operand is RF[a], or with `s` the hardware's value `a`
 (SPECIALS) as it was the clock before (it is registered with the read of RF).
@@ -31,7 +32,8 @@ Instructions (`op a n`): the operand is RF[a], or with `s` the hardware's value 
                 LOW's top n bits times RF[a] (the product below 2^32)
     QUOT        ACC <- LOW, or 2^31 - 1 if the quotient needs more than 31 bits
     STORE a     RF[a] <- ACC
-    OUT a       the velocity block's registers from ACC (OUT_KINDS)
+    OUT a       the velocity block's output from ACC (OUT_KINDS)
+    SIGN a      ACC <- -ACC, as ~ACC + RF[a] (a: C_ONE), unless the last step was CW
     FLAG a n    flag a <- n                     DONE            the step held is done
     JMP c n     if condition c: the next instruction is n (CONDITIONS)
     WAIT n      until the step held is n clocks old (`age`, as the clock began)
@@ -46,12 +48,12 @@ RF_WORDS = 32
 WORD_MASK = (1 << WORD_BITS) - 1
 
 OPS = ("NOP", "LOAD", "ADD", "SUB", "HALF", "NUM", "DIV", "MUL", "QUOT", "STORE", "OUT", "FLAG",
-       "DONE", "JMP", "WAIT")
-SPECIALS = ("NOW", "STIME", "SPOSC", "SPEED", "LTIME", "LWIDTH")   # operands besides the RF
-FLAGS = ("ANCH", "HAVE", "BND", "STALE")
-OUT_KINDS = ("SPEED_A0", "SPEED", "ACCEL")   # speed, accel <- 0; speed; accel
+       "DONE", "JMP", "WAIT", "SIGN")
+SPECIALS = ("NOW", "STIME", "SPOSC", "LTIME", "LWIDTH")   # operands besides the RF
+FLAGS = ("ANCH", "HAVE", "BND", "STALE", "ACCEL", "TICK")   # TICK: not a flag (see FLAG)
+OUT_KINDS = ("VELOCITY",)   # the velocity, signed; valid
 CONDITIONS = ("ALWAYS", "PEND", "NEG", "NOT_NEG", "HAVE", "NOT_HAVE", "ANCH", "NOT_ANCH",
-              "BND", "NOT_BND", "STALE", "NOT_STALE")
+              "BND", "NOT_BND", "STALE", "NOT_STALE", "ACCEL", "NOT_ACCEL", "DUE", "NOT_DUE")
 
 
 @dataclass(frozen=True)
@@ -64,7 +66,7 @@ class Instruction:
 
     def reads(self) -> int | None:
         """The RF word this instruction reads, or None."""
-        if self.op in ("LOAD", "ADD", "SUB") and not self.special:
+        if self.op in ("LOAD", "ADD", "SUB", "SIGN") and not self.special:
             return self.a
         if self.op in ("DIV", "MUL"):
             return self.a
@@ -80,8 +82,11 @@ def signed(value: int, bits: int) -> int:
 
 
 def check(program: list[Instruction], restart: int) -> None:
-    """Refuse a program that reads a word the instruction before writes, or whose
-    instruction a jump (an abort, a restart) goes to reads an operand."""
+    """Refuse a program that writes RF[0] (the RTL's QUOT adds it), reads a word the
+    instruction before writes, or whose instruction a jump (an abort, a restart) goes
+    to reads an operand."""
+    if any(ins.writes() == 0 for ins in program):
+        raise ValueError("a program must not write RF[0]: QUOT adds it, as 0")
     for k, ins in enumerate(program[:-1]):
         w, r = ins.writes(), program[k + 1].reads()
         if w is not None and w == r:
@@ -95,8 +100,8 @@ def check(program: list[Instruction], restart: int) -> None:
 
 class Engine:
     """Clock-level model of the engine: `step(hw)` runs one clock. `hw` gives the
-    hardware's values (the SPECIALS and `pend`) as the clock began, and returns what
-    the instruction does to the velocity block (`out`, `done`)."""
+    hardware's values (the SPECIALS, `pend` and `cw`) as the clock began, and returns
+    what the instruction does to the velocity block (`out`, `done`)."""
 
     def __init__(self, program: list[Instruction], constants: dict[int, int], restart: int = 0):
         self.program = program
@@ -131,9 +136,11 @@ class Engine:
     def operand(self, ins: Instruction) -> int:
         return self.spec if ins.special else self.rd
 
-    def condition(self, c: str, pend: int) -> bool:
+    def condition(self, c: str, pend: int, due: int = 0) -> bool:
         if c == "ALWAYS":
             return True
+        if c in ("DUE", "NOT_DUE"):
+            return bool(due and self.flags["ACCEL"]) == (c == "DUE")
         if c == "PEND":
             return bool(pend)
         if c == "NEG":
@@ -144,7 +151,7 @@ class Engine:
         value = bool(self.flags[flag])
         return not value if c.startswith("NOT_") else value
 
-    def step(self, specials: dict[str, int], pend: int, age: int = 0) -> dict:
+    def step(self, specials: dict[str, int], pend: int, age: int = 0, cw: int = 1, due: int = 0) -> dict:
         """One clock; returns what the velocity block takes from it: `out` (kind, ACC)
         and `done`."""
         ins = self.program[self.pc]
@@ -177,7 +184,7 @@ class Engine:
         elif op == "NUM":
             low, acc, self.ovf = acc, 0, 0
         elif op == "DIV":
-            if ins.abortable and pend:
+            if ins.abortable and (pend or (due and self.flags["ACCEL"])):
                 pc_next, self.left = 0, 0
             elif self.left == 0:               # the first clock takes the divisor
                 self.left, self.op, pc_next = ins.n, self.rd, self.pc
@@ -201,11 +208,17 @@ class Engine:
         elif op == "OUT":
             effects["out"] = (OUT_KINDS[ins.a], acc)
         elif op == "FLAG":
-            self.flags[FLAGS[ins.a]] = ins.n
+            if FLAGS[ins.a] == "TICK":
+                effects["tick"] = ins.n
+            else:
+                self.flags[FLAGS[ins.a]] = ins.n
         elif op == "DONE":
             effects["done"] = 1
+        elif op == "SIGN":
+            if not cw:
+                acc = (acc ^ WORD_MASK) + self.operand(ins)
         elif op == "JMP":
-            if self.condition(CONDITIONS[ins.a], pend):
+            if self.condition(CONDITIONS[ins.a], pend, due):
                 pc_next = ins.n
         elif op == "WAIT":
             if age < ins.n:

@@ -74,14 +74,16 @@ RUN_SHIFT_SETTLED = 5  # ... after SETTLED windows passed without a trend: 1/32
 SETTLED = 16
 TREND = 6              # with a table and EDGE_TOLERANCE: more in a row on one side of S
 LEVEL_0 = (5 << CAL_FRAC) // 4     # an overdue edge: the quarter's width and a quarter
+LEVEL_SHIFT = 17       # LEVEL (below 2^14) and the width come 17 bits up: its division 35 steps
 DELTA = {0: 0, 1: 1 << (V_FRAC - 10)}   # an edge's residual error with a table: 2^-10 quarter
 OLD = 1 << 30          # an anchor older than this (clocks) is dropped
+K = 64                 # the speed integrates the acceleration every K clocks (A: per K clocks)
 
 # The register file: the constants first (initial values), then the variables.
 RF = ("C_ZERO", "C_WINDOW", "C_SHORT", "C_QUARTERS", "C_LEVEL0", "C_2DELTA", "C_LATENCY",
       "C_OLD", "C_ONE", "C_TWO", "C_CYCLE", "C_SETTLED", "C_TREND",
-      "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "HOLD", "P1", "P2", "T0", "T1", "T2",
-      "STOP_AT", "RUNS", "UP_LEFT", "DOWN_LEFT")
+      "W_TIME", "W_POSC", "V1", "V2", "UPS", "DOWNS", "P1", "P2", "T0", "T1", "T2",
+      "STOP_AT", "RUNS", "UP_LEFT", "DOWN_LEFT", "S", "A")
 QUARTERS = (3 << CAL_FRAC) // 2        # below 1.5 quarters: a window of one quarter
 CYCLE = (7 << CAL_FRAC) // 2           # EDGE_TOLERANCE > 0: below 3.5 quarters, no window;
                                        # then below 4.5 (C_QUARTERS 1), a whole cycle
@@ -108,7 +110,7 @@ def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
     edge = edge_delta(edge_tolerance)
     cycles = edge_tolerance > 0
     values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2,
-              "C_QUARTERS": (1 << CAL_FRAC) if cycles else QUARTERS, "C_LEVEL0": LEVEL_0 + 2 * edge,
+              "C_QUARTERS": (1 << CAL_FRAC) if cycles else QUARTERS, "C_LEVEL0": (LEVEL_0 + 2 * edge) << LEVEL_SHIFT,
               "C_2DELTA": 2 * DELTA[cal] + (2 * edge << (V_FRAC - CAL_FRAC)), "C_LATENCY": LATENCY,
               "C_OLD": OLD, "C_ONE": 1, "C_TWO": 2, "C_CYCLE": CYCLE if cycles else 0,
               "C_SETTLED": SETTLED, "C_TREND": TREND if (cal and cycles) else 0}
@@ -120,7 +122,8 @@ def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
 WRITTEN = [
     # Nothing pending: bound the speed by an overdue edge, stop, or drop an old anchor.
     ("IDLE", "JMP", "PEND", "STEP"),
-    (None, "JMP", "HAVE", "AGE"),
+    (None, "JMP", "DUE", "UPDATE"),
+    ("CHECKS", "JMP", "HAVE", "AGE"),
     (None, "JMP", "NOT_ANCH", "IDLE"),
     (None, "LOAD", "s.NOW"),
     (None, "SUB", "W_TIME"),
@@ -137,12 +140,15 @@ WRITTEN = [
     ("BOUND", "LOAD", "s.LWIDTH"),         # LEVEL: the quarter's width and a quarter
     (None, "ADD", "C_LEVEL0"),
     (None, "NUM"),
-    (None, "DIV", "T1", 52, "abortable"),  # LEVEL / since, 2^-32 quarter per clock
+    (None, "DIV", "T1", 52 - LEVEL_SHIFT, "abortable"),  # LEVEL / since, 2^-32 quarter per clock
     (None, "QUOT"),
-    (None, "SUB", "s.SPEED"),
+    (None, "SUB", "S"),
     (None, "JMP", "NOT_NEG", "IDLE"),      # not overdue
-    (None, "ADD", "s.SPEED"),
-    (None, "OUT", "SPEED_A0"),
+    (None, "ADD", "S"),
+    (None, "STORE", "S"),
+    (None, "FLAG", "ACCEL", 0),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
     (None, "JMP", "BND", "IDLE"),
     (None, "FLAG", "BND", 1),              # the first bound: a stop at 1.5 times since
     (None, "LOAD", "T1"),
@@ -151,8 +157,22 @@ WRITTEN = [
     (None, "STORE", "STOP_AT"),
     (None, "JMP", "ALWAYS", "IDLE"),
     ("STOP", "LOAD", "C_ZERO"),
-    (None, "OUT", "SPEED_A0"),
+    (None, "OUT", "VELOCITY"),
     (None, "JMP", "ALWAYS", "RESTART"),
+    # The speed integrates the acceleration (ACCEL): S <- S + A (now - TS), shown.
+    ("UPDATE", "LOAD", "S"),
+    (None, "ADD", "A"),
+    (None, "JMP", "NEG", "HALT"),          # through 0 (or out of range): it stops at 0
+    (None, "STORE", "S"),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
+    (None, "FLAG", "TICK", 0),
+    (None, "JMP", "ALWAYS", "IDLE"),       # (and again, while K clocks are due)
+    ("HALT", "LOAD", "C_ZERO"),
+    (None, "STORE", "S"),
+    (None, "FLAG", "ACCEL", 0),
+    (None, "OUT", "VELOCITY"),
+    (None, "JMP", "ALWAYS", "CHECKS"),
     # A step (held until DONE): the quarter's LEVEL, then a window's close or its anchor.
     ("STEP", "FLAG", "BND", 0),
     (None, "JMP", "NOT_ANCH", "ANCHOR"),
@@ -194,16 +214,24 @@ WRITTEN = [
     (None, "DIV", "P1", 52),               # V1 = N1 / P1
     (None, "QUOT"),
     (None, "STORE", "V1"),
-    (None, "JMP", "NOT_HAVE", "FIRST"),
+    (None, "JMP", "NOT_DUE", "CLOSED"),     # an update due: taken here, where ACC is free
+    (None, "LOAD", "S"),
+    (None, "ADD", "A"),
+    (None, "JMP", "NEG", "CLOSED"),         # (through 0: left to the idle loop)
+    (None, "STORE", "S"),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
+    (None, "FLAG", "TICK", 0),
+    ("CLOSED", "JMP", "NOT_HAVE", "FIRST"),
     # The test: |V1 - S| < 2 (S + 2 DELTA) / P1, as |V1 - S| / 2 < (S + 2 DELTA) / P1.
-    (None, "LOAD", "s.SPEED"),
+    (None, "LOAD", "S"),
     (None, "ADD", "C_2DELTA"),
     (None, "NUM"),
     (None, "DIV", "P1", 32),
     (None, "QUOT"),
     (None, "STORE", "T0"),
     (None, "LOAD", "V1"),
-    (None, "SUB", "s.SPEED"),
+    (None, "SUB", "S"),
     (None, "HALF", 1),
     (None, "STORE", "T1"),                 # (V1 - S) / 2, for the running mean
     (None, "JMP", "NEG", "BELOW"),
@@ -243,8 +271,11 @@ WRITTEN = [
     ("SETTLED", "LOAD", "T1"),             # S + (V1 - S) / 2^RUN_SHIFT_SETTLED
     (None, "HALF", RUN_SHIFT_SETTLED - 1),
     ("FRESH", "FLAG", "STALE", 1),         # (SETTLED: set already)
-    ("MEAN", "ADD", "s.SPEED"),
-    (None, "OUT", "SPEED_A0"),
+    ("MEAN", "ADD", "S"),
+    (None, "STORE", "S"),
+    (None, "FLAG", "ACCEL", 0),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
     ("STEADY", "LOAD", "C_ZERO"),          # no run of changes
     (None, "STORE", "UPS"),
     (None, "STORE", "DOWNS"),
@@ -266,7 +297,10 @@ WRITTEN = [
     ("AGREED", "LOAD", "V1"),
     (None, "ADD", "V2"),
     (None, "HALF", 1),
-    (None, "OUT", "SPEED_A0"),
+    (None, "STORE", "S"),
+    (None, "FLAG", "ACCEL", 0),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
     (None, "JMP", "ALWAYS", "STEADY"),
     # V1 changed from V2 (UPS, DOWNS: the windows before that changed the same way, up
     # to 2). The first change: S <- V1, acceleration 0. The second: the fit's speed, but
@@ -286,15 +320,16 @@ WRITTEN = [
     (None, "SUB", "C_ONE"),
     (None, "JMP", "NEG", "FIRST_UP"),
     (None, "SUB", "C_ONE"),
-    (None, "STORE", "HOLD"),               # UPS - 2
+    (None, "STORE", "T2"),                 # HOLD: UPS - 2
     (None, "LOAD", "C_TWO"),
     (None, "STORE", "UPS"),
     (None, "LOAD", "V1"),
     (None, "SUB", "V2"),
     (None, "NUM"),
-    (None, "DIV", "T1", 33),               # 2 |V1 - V2| / (P1 + P2)
+    (None, "DIV", "T1", 39),               # 2 |V1 - V2| K / (P1 + P2)
     (None, "QUOT"),
-    (None, "STORE", "T0"),                 # a
+    (None, "STORE", "T0"),                 # the acceleration per K clocks
+    (None, "HALF", 6),                     # a
     (None, "JMP", "ALWAYS", "EXTRAPOLATE"),
     ("FIRST_UP", "LOAD", "C_ONE"),
     (None, "STORE", "UPS"),
@@ -305,18 +340,22 @@ WRITTEN = [
     (None, "SUB", "C_ONE"),
     (None, "JMP", "NEG", "FIRST_DOWN"),
     (None, "SUB", "C_ONE"),
-    (None, "STORE", "HOLD"),               # DOWNS - 2
+    (None, "STORE", "T2"),                 # HOLD: DOWNS - 2
     (None, "LOAD", "C_TWO"),
     (None, "STORE", "DOWNS"),
     (None, "LOAD", "V2"),
     (None, "SUB", "V1"),
     (None, "NUM"),
-    (None, "DIV", "T1", 33),
+    (None, "DIV", "T1", 39),
     (None, "QUOT"),
-    (None, "STORE", "T0"),                 # |a|
+    (None, "STORE", "T0"),
+    (None, "HALF", 6),
+    (None, "STORE", "T1"),                 # |a|
     (None, "LOAD", "C_ZERO"),
     (None, "SUB", "T0"),
-    (None, "STORE", "T0"),                 # a, signed
+    (None, "STORE", "T0"),                 # the acceleration per K clocks, signed
+    (None, "LOAD", "C_ZERO"),
+    (None, "SUB", "T1"),                   # a, signed
     ("EXTRAPOLATE", "STORE", "T1"),        # (ACC: a)
     (None, "LOAD", "P1"),
     (None, "HALF", 1),
@@ -325,22 +364,26 @@ WRITTEN = [
     (None, "MUL", "T1", 32),               # a (P1 / 2 + LATENCY)
     (None, "ADD", "V1"),
     (None, "STORE", "T1"),                 # the speed to load
-    (None, "LOAD", "HOLD"),
-    (None, "JMP", "NEG", "NO_ACCEL"),
-    (None, "LOAD", "T0"),
-    (None, "JMP", "ALWAYS", "WAIT"),
-    ("NO_ACCEL", "LOAD", "C_ZERO"),        # the second change of a run
+    (None, "LOAD", "T2"),                  # HOLD
+    (None, "JMP", "NOT_NEG", "WAIT"),
+    (None, "LOAD", "C_ZERO"),              # the second change of a run: no acceleration
+    (None, "STORE", "T0"),
     # Wait for the load's clock: LATENCY after the closing step.
-    ("WAIT", "STORE", "T0"),               # a, signed
-    (None, "LOAD", "T1"),
+    ("WAIT", "LOAD", "T1"),
     (None, "JMP", "NEG", "ZERO"),          # decelerated through 0
-    (None, "WAIT", LATENCY - 3),           # the output shows it LATENCY after the step
-    (None, "OUT", "SPEED"),
+    (None, "WAIT", LATENCY - 4),           # the output shows it LATENCY after the step
+    (None, "STORE", "S"),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
     (None, "LOAD", "T0"),
-    (None, "OUT", "ACCEL"),
+    (None, "STORE", "A"),
+    (None, "FLAG", "TICK", 1),
+    (None, "FLAG", "ACCEL", 1),
     (None, "JMP", "ALWAYS", "NEXT"),
     ("ZERO", "LOAD", "C_ZERO"),
-    (None, "OUT", "SPEED_A0"),
+    (None, "STORE", "S"),
+    (None, "FLAG", "ACCEL", 0),
+    (None, "OUT", "VELOCITY"),
     (None, "JMP", "ALWAYS", "NEXT"),
     ("FIRST", "LOAD", "C_SETTLED"),
     (None, "STORE", "RUNS"),
@@ -351,7 +394,10 @@ WRITTEN = [
     ("FIRST_DOWN", "LOAD", "C_ONE"),
     (None, "STORE", "DOWNS"),
     ("JUMPED", "LOAD", "V1"),
-    (None, "OUT", "SPEED_A0"),
+    (None, "STORE", "S"),
+    (None, "FLAG", "ACCEL", 0),
+    (None, "SIGN", "C_ONE"),
+    (None, "OUT", "VELOCITY"),
     ("NEXT", "LOAD", "V1"),                # the last window, for the next fit
     (None, "STORE", "V2"),
     (None, "LOAD", "P1"),
@@ -365,8 +411,10 @@ WRITTEN = [
     (None, "FLAG", "HAVE", 0),
     ("DONE", "DONE"),                      # the next step is captured from now on
     (None, "JMP", "ALWAYS", "IDLE"),
-    # A restart (reset, a reversal, an illegal transition): the speed is 0 already.
-    ("RESTART", "FLAG", "ANCH", 0),
+    # A restart (reset, a reversal, an illegal transition): the output is 0 already.
+    ("RESTART", "STORE", "S"),             # (ACC 0)
+    (None, "FLAG", "ACCEL", 0),
+    (None, "FLAG", "ANCH", 0),
     (None, "FLAG", "HAVE", 0),
     (None, "FLAG", "BND", 0),
     (None, "JMP", "ALWAYS", "IDLE"),
@@ -375,7 +423,7 @@ WRITTEN = [
 
 def reads_operand(row) -> bool:
     op, *args = row[1:]
-    return op in ("LOAD", "ADD", "SUB", "DIV", "MUL")
+    return op in ("LOAD", "ADD", "SUB", "DIV", "MUL", "SIGN")
 
 
 def with_landings(written) -> list[tuple]:
@@ -403,7 +451,7 @@ def assemble(source=SOURCE) -> list[Instruction]:
         args = [x for x in args if x != "abortable"]
         if op == "HALF":
             n = args[0]
-        elif op in ("LOAD", "ADD", "SUB", "STORE", "DIV", "MUL"):
+        elif op in ("LOAD", "ADD", "SUB", "STORE", "DIV", "MUL", "SIGN"):
             name = args[0]
             if name.startswith("s."):
                 a, special = SPECIALS.index(name[2:]), True
@@ -430,9 +478,10 @@ RESTART = next(k for k, row in enumerate(SOURCE) if row[0] == "RESTART")
 # `python -m prenc.fine.program` (a test checks it is up to date). A word also holds the
 # operand of the instruction after it in the program (a special's number, or the
 # register file's address), which the RTL fetches while it runs.
-WORD_BITS = 29   # the adder's controls 4, op 4, special 1, abortable 1, a 5, n 8, next (s 1, a 5)
-ADDER_CONTROLS = {"step": ("DIV", "MUL"), "invert": ("SUB", "DIV"), "mul": ("MUL",),
-                  "load": ("LOAD",)}
+WORD_BITS = 31   # the adder's controls 5, op 4, special 1, abortable 1, a 5, n 9, next (s 1, a 5)
+PC_BITS = 9      # 512 words
+ADDER_CONTROLS = {"step": ("DIV", "MUL"), "invert": ("SUB", "DIV", "SIGN"), "mul": ("MUL",),
+                  "load": ("LOAD",), "quot": ("QUOT",)}
 
 
 def read_address(ins: Instruction) -> int:
@@ -448,13 +497,13 @@ def encode(k: int, program=PROGRAM) -> int:
     from .engine import OPS
 
     ins = program[k]
-    if not 0 <= ins.n < 256 or not 0 <= ins.a < 32:
+    if not 0 <= ins.n < (1 << PC_BITS) or not 0 <= ins.a < 32:
         raise ValueError(f"{ins}: a field out of range")
     following = program[k + 1] if k + 1 < len(program) else Instruction("NOP")
     next_a = (int(following.special) << 5) | read_address(following)
     controls = sum(int(ins.op in ops) << b for b, ops in enumerate(reversed(ADDER_CONTROLS.values())))
-    return (controls << 25) | (OPS.index(ins.op) << 21) | (int(ins.special) << 20) | \
-        (int(ins.abortable) << 19) | (ins.a << 14) | (ins.n << 6) | next_a
+    return (controls << 26) | (OPS.index(ins.op) << 22) | (int(ins.special) << 21) | \
+        (int(ins.abortable) << 20) | (ins.a << 15) | (ins.n << 6) | next_a
 
 
 def rom_verilog(program=PROGRAM, source=SOURCE) -> str:
@@ -463,9 +512,10 @@ def rom_verilog(program=PROGRAM, source=SOURCE) -> str:
     lines = [
         "// SPDX-License-Identifier: Apache-2.0",
         "// prenc_velocity_program: prenc_velocity's program in block RAM, a word a clock:",
-        "// {step, invert, mul, load, op[3:0], special, abortable, a[4:0], n[7:0], next_s,",
+        "// {step, invert, mul, load, quot, op[3:0], special, abortable, a[4:0], n[8:0], next_s,",
         "// next_a[4:0]} (prenc.fine.engine, prenc.fine.program; docs/fine.md). step, invert,",
-        "// mul, load: the adder's controls, decoded here (DIV or MUL; SUB or DIV; MUL; LOAD).",
+        "// mul, load, quot: the adder's controls, decoded here (DIV or MUL; SUB, DIV or SIGN;",
+        "// MUL; LOAD; QUOT: the quotient through the adder, plus RF[0], which is 0).",
         "// next_s, next_a: the operand of the instruction after it in the program (a special",
         "// and its number, or the register file's address).",
         "//",
@@ -478,23 +528,23 @@ def rom_verilog(program=PROGRAM, source=SOURCE) -> str:
         "",
         "module prenc_velocity_program (",
         "  input  wire        clk,",
-        "  input  wire [7:0]  pc,",
+        f"  input  wire [{PC_BITS - 1}:0]  pc,",
         f"  output reg  [{WORD_BITS - 1}:0] word,      // the word at pc, a clock later",
-        "  output wire [7:0]  restart    // where a restart goes",
+        f"  output wire [{PC_BITS - 1}:0]  restart    // where a restart goes",
         ");",
         "",
-        f"  reg [{WORD_BITS - 1}:0] rom [0:255];",
+        f"  reg [{WORD_BITS - 1}:0] rom [0:{(1 << PC_BITS) - 1}];",
         "",
-        f"  assign restart = 8'd{RESTART};",
+        f"  assign restart = {PC_BITS}'d{RESTART};",
         "",
         "  integer i;",
         "  initial begin",
-        f"    for (i = 0; i < 256; i = i + 1) rom[i] = {WORD_BITS}'d0;",
+        f"    for (i = 0; i < {1 << PC_BITS}; i = i + 1) rom[i] = {WORD_BITS}'d0;",
     ]
     for k, row in enumerate(source):
         label = f"{row[0]}: " if row[0] else ""
         text = " ".join(str(x) for x in row[1:])
-        lines.append(f"    rom[{k}] = {WORD_BITS}'h{encode(k, program):07x};   // {label}{text}")
+        lines.append(f"    rom[{k}] = {WORD_BITS}'h{encode(k, program):08x};   // {label}{text}")
     lines += [
         "  end",
         "",

@@ -9,14 +9,12 @@ engine of prenc.fine.engine; around them, the registers the RTL keeps every cloc
   the direction: along the motion, in 2^-12 quarter). Every step, held or not: its
   clock LTIME and LWIDTH, the width of the quarter it entered less one (c_hi - c_lo,
   2^-12 quarter, clamped to -1/2 .. 3/4).
-- The speed (2^-32 quarter per clock, unsigned, below 1/2) integrates the acceleration
-  (2^-32 quarter per clock^2, signed) every clock; it never crosses 0: it stops there,
-  the acceleration 0 (and so out of range). The program loads them (OUT).
+- The output: the velocity, 2^-32 quarter per clock, signed, as the program shows it
+  (OUT: the speed it keeps in its register file, with the sign of the last step, SIGN;
+  an acceleration it integrates whenever it is idle), and `valid`.
 - A reversal (a step against the last) or an illegal transition restarts the program
-  (the speed and the acceleration 0; an illegal transition also drops `valid` and the
-  step held; a reversal holds its step: the anchor of the first window after it).
-- The output: the speed with the sign of the last step, 2^-32 quarter per clock,
-  registered.
+  (the velocity 0; an illegal transition also drops `valid` and the step held; a
+  reversal holds its step: the anchor of the first window after it).
 
 Units: quarters and clocks; `velocity` is signed with V_FRAC = 32 fractional bits.
 """
@@ -24,9 +22,8 @@ Units: quarters and clocks; `velocity` is signed with V_FRAC = 32 fractional bit
 from __future__ import annotations
 
 from .engine import Engine, WORD_MASK
-from .program import PROGRAM, RESTART, V_FRAC, constants
+from .program import K, LEVEL_SHIFT, PROGRAM, RESTART, V_FRAC, constants
 
-SPEED_BITS = V_FRAC - 1               # the speed: 2^-32 quarter per clock, below 1/2
 COUNT_BITS = 20
 AGE_MAX = 511                         # the held step's age, saturating (9 bits)
 WIDTH_LO, WIDTH_HI = -(1 << 11), 3 << 10   # the quarter's width less one, clamped (2^-12)
@@ -57,9 +54,9 @@ class Velocity:
         self.pend = 0
         self.cw = 1
         self.moved = 0
-        self.speed = 0
-        self.accel = 0
         self.valid = 0
+        self.tick = K
+        self.due = 0
         self.velocity = 0
 
     def clock(self, step: int = 0, step_cw: int = 0, illegal: int = 0, rst: int = 0,
@@ -73,26 +70,27 @@ class Velocity:
         if not self.cal:
             c_lo = c_hi = 0
         specials = {"NOW": self.now, "STIME": self.stime, "SPOSC": self.sposc,
-                    "SPEED": self.speed, "LTIME": self.ltime,
-                    "LWIDTH": self.lwidth}
-        effects = self.engine.step(specials, self.pend, min((self.now - self.stime) & WORD_MASK, AGE_MAX))
-        # The output, from the speed as the cycle began.
-        self.velocity = self.speed if self.cw else -self.speed
-        # The speed integrates the acceleration and stops at 0 (and out of range).
-        speed, accel = self.speed + self.accel, self.accel
-        if not 0 <= speed < (1 << SPEED_BITS):
-            speed, accel = 0, 0
+                    "LTIME": self.ltime, "LWIDTH": self.lwidth << LEVEL_SHIFT}
+        effects = self.engine.step(specials, self.pend, min((self.now - self.stime) & WORD_MASK, AGE_MAX),
+                                   self.cw, self.due)
+        # The tick: every K clocks one more update is due (up to 7); FLAG TICK 0 takes
+        # one, FLAG TICK 1 restarts it (K / 2 to go: the speed shown is each K clocks'
+        # middle one).
+        self.tick -= 1
+        due = self.due
+        if self.tick == 0:
+            self.tick, due = K, min(due + 1, 7)
+        t = effects.get("tick")
+        if t == 0:
+            due = max(due - 1, 0)
+        elif t == 1:
+            self.tick, due = K // 2, 0
+        self.due = due
         out = effects.get("out")
         if out is not None:
-            kind, acc = out
-            value = acc - (1 << 32) if acc >> 31 else acc
-            if kind in ("SPEED_A0", "SPEED"):
-                speed = max(0, value)
-                self.valid = 1
-                if kind == "SPEED_A0":
-                    accel = 0
-            else:
-                accel = value
+            _, acc = out
+            self.velocity = acc - (1 << 32) if acc >> 31 else acc
+            self.valid = 1
         if effects.get("done"):
             self.pend = 0
         # The steps.
@@ -107,9 +105,8 @@ class Velocity:
             self.ltime = self.now
             self.lwidth = max(WIDTH_LO, min(WIDTH_HI, c_hi - c_lo))
             self.cw, self.moved = step_cw, 1
-        self.speed, self.accel = speed, accel
         if illegal or reversal:
-            self.speed = self.accel = 0
+            self.velocity = 0
             self.engine.restart(RESTART)
             if illegal:
                 self.valid = self.pend = self.moved = 0

@@ -368,7 +368,7 @@ def test_the_rtls_program_is_the_models():
     # rtl/fine/prenc_velocity_program.v is written from prenc.fine.program: up to date.
     text = (RTL / "fine" / "prenc_velocity_program.v").read_text()
     assert text == program.rom_verilog(), "run: python -m prenc.fine.program > rtl/fine/prenc_velocity_program.v"
-    assert re.search(rf"assign restart = 8'd{program.RESTART};", text)
+    assert re.search(rf"assign restart = {program.PC_BITS}'d{program.RESTART};", text)
 
 
 def test_a_program_that_reads_what_it_just_wrote_or_reads_where_a_jump_lands_is_refused():
@@ -377,5 +377,7 @@ def test_a_program_that_reads_what_it_just_wrote_or_reads_where_a_jump_lands_is_
         check([store, Instruction("LOAD", 3)], 0)
     with pytest.raises(ValueError, match="instruction 2, where a jump goes, reads an operand"):
         check([Instruction("NOP"), Instruction("JMP", 0, 2), Instruction("ADD", 4)], 0)
+    with pytest.raises(ValueError, match="must not write RF\\[0\\]"):   # QUOT adds RF[0] as 0
+        check([Instruction("STORE", 0), Instruction("NOP")], 0)
     check(program.PROGRAM, program.RESTART)   # the program itself passes
     Engine(program.PROGRAM, program.constants(1024, 0), program.RESTART)
