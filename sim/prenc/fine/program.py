@@ -38,7 +38,11 @@ The estimator, in the engine's words (docs/fine.md):
     the program waits for, exactly.
     - The first change: S <- V1, acceleration 0.
     - The second: the fit's speed, acceleration 0 (HOLD).
-    - The third and on: the fit, the acceleration integrated from then on.
+    - The third and on: the fit, and its acceleration A (per K = 64 clocks) from then
+      on: the hardware makes one update due every K clocks (TICK, restarted at K / 2
+      by the load, so that each update shows the speed of its K clocks' middle), and
+      the program adds A to S for each (the idle loop, or between a window's divisions
+      once V1 is stored), stopping at 0.
     A step of speed (at once) changes two windows at most, the one it falls in and the
     next, so it is never integrated: until the window after them agrees, the speed is
     between the two speeds widened by the second change's extrapolation: at most that
@@ -50,9 +54,15 @@ The estimator, in the engine's words (docs/fine.md):
   less than LEVEL since that step, so its mean speed is below the quotient: the speed
   is bounded by it (acceleration 0). Half as long again without a step is a stop: 0.
   The first bound comes 1.25 edge periods after the last step, the stop 1.9 periods
-  after it: a disc that stops reads 0 within two of its edge periods, and one whose
-  speed falls to half or less at once reads 0 until the first window after its next
-  edge (the speed is below the bound, 0.67 of the last, all the while).
+  after it: a disc that stops reads 0 within two of its edge periods where these are
+  long against the engine's own pace (a division and the updates: about 150 clocks; at
+  10,000 rpm, N = 10, 30 MHz, 3.3 periods), and one whose speed falls to half or less
+  at once reads 0 until the first window after its next edge (the speed is below the
+  bound, 0.67 of the last, all the while). A due update ends the bound's division
+  (DIV abortable); its 35 steps on operands that come LEVEL_SHIFT bits up fit between
+  two ticks, so a disc that stops during a ramp is bounded and then stopped.
+- The output: every OUT VELOCITY shows the accumulator, which SIGN has negated unless
+  the last step was CW: the velocity is 0 or has the sign of the last step.
 - The first step after a start (reset, a reversal, an illegal transition, a stop) is
   the anchor of the first window.
 - A step is held (its clock and its edge's place: STIME, SPOSC) from the clock it comes
@@ -159,7 +169,7 @@ WRITTEN = [
     ("STOP", "LOAD", "C_ZERO"),
     (None, "OUT", "VELOCITY"),
     (None, "JMP", "ALWAYS", "RESTART"),
-    # The speed integrates the acceleration (ACCEL): S <- S + A (now - TS), shown.
+    # An update is due (ACCEL, every K clocks): S <- S + A, shown.
     ("UPDATE", "LOAD", "S"),
     (None, "ADD", "A"),
     (None, "JMP", "NEG", "HALT"),          # through 0 (or out of range): it stops at 0

@@ -11,7 +11,8 @@ engine of prenc.fine.engine; around them, the registers the RTL keeps every cloc
   2^-12 quarter, clamped to -1/2 .. 3/4).
 - The output: the velocity, 2^-32 quarter per clock, signed, as the program shows it
   (OUT: the speed it keeps in its register file, with the sign of the last step, SIGN;
-  an acceleration it integrates whenever it is idle), and `valid`.
+  and its acceleration, added once for every K = 64 clocks that TICK makes due), and
+  `valid`.
 - A reversal (a step against the last) or an illegal transition restarts the program
   (the velocity 0; an illegal transition also drops `valid` and the step held; a
   reversal holds its step: the anchor of the first window after it).
