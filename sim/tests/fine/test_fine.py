@@ -194,6 +194,26 @@ def test_velocity_reads_zero_within_two_edge_periods_of_a_stop(braking_ms):
     assert (out["velocity"][zero:] == 0).all() and out["velocity_valid"][zero:].all()
 
 
+@pytest.mark.parametrize("cut_ms", [1.0, 2.0, 3.0])
+def test_a_dead_stop_during_a_ramp_reads_zero_and_never_more_than_the_speed_at_the_stop(cut_ms):
+    # The ramp of 600 -> 6,000 rpm in 4 ms, the disc held still at once `cut_ms` into it
+    # (the speed then integrates an acceleration): the velocity must not go on integrating
+    # past the speed at the stop, and reads 0 within two of the last edge periods plus
+    # the engine's pace (docs/fine.md: 200 clocks).
+    traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 2e-3).accelerate(fb.rpm(6000), 4e-3)
+    cut = int((2 + cut_ms) * 1e-3 * fb.CLK_HZ)
+    theta = np.concatenate([traj.theta[:cut], np.full(int(2e-3 * fb.CLK_HZ), traj.theta[cut - 1])])
+    sync = fb.sync_stream(theta, None)
+    velocity = fb.run_fine(sync)["velocity"]
+    edges = np.flatnonzero(sync.step)
+    last, period = edges[-1], edges[-1] - edges[-2]
+    at_stop = 4 * (theta[cut - 1] - theta[cut - 2])   # quarters per clock
+    assert np.abs(velocity[cut:]).max() <= 1.01 * at_stop, (np.abs(velocity[cut:]).max(), at_stop)
+    zero = np.flatnonzero(velocity[last:] == 0)[0] + last
+    assert zero - last <= 2 * period + 200, (zero - last, period)
+    assert (velocity[zero:] == 0).all()
+
+
 @pytest.mark.parametrize("rpm", [100, 600, 6000])
 def test_a_printed_disc_without_its_table_reads_its_speed_with_edge_tolerance(rpm):
     # The printed disc, no table: with EDGE_TOLERANCE (whole-cycle windows) the velocity
