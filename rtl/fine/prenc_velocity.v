@@ -45,8 +45,8 @@
 //            (the nominal ones: a printed disc without its table; with CAL = 1 the
 //            table's: a noisy sensor), 1/1000 slot, 0..60: the windows are whole
 //            cycles, the constant-speed test allows that much more error at each edge,
-//            and an overdue edge waits for a quarter that much wider (docs/fine.md: what
-//            to set). 0 (default): edges exact to a clock
+//            and an overdue edge waits for a quarter four times that much wider (its two
+//            edges; docs/fine.md: what to set). 0 (default): edges exact to a clock
 //
 // Ports
 //   step, step_cw, illegal   the quadrature decoder's registered outputs
@@ -107,7 +107,7 @@ module prenc_velocity #(
   localparam [31:0] C_QUARTERS = (CYCLES == 1) ? (1 << CAL_FRAC) : (3 << CAL_FRAC) / 2;
   localparam integer LEVEL_SHIFT = 17;           // LEVEL (below 2^14) 17 bits up: the
                                                  // overdue bound's division takes 35 steps
-  localparam [31:0] C_LEVEL0   = ((5 << CAL_FRAC) / 4 + 2 * EDGE) << LEVEL_SHIFT;
+  localparam [31:0] C_LEVEL0   = ((5 << CAL_FRAC) / 4 + 4 * EDGE) << LEVEL_SHIFT;
   localparam [31:0] C_2DELTA   = ((CAL == 1) ? (32'd2 << 22) : 32'd0)   // 2 x 2^-10 quarter
                                + (EDGE << 21);                        // 2 x EDGE, 2^-32
   localparam [31:0] C_CYCLE    = (CYCLES == 1) ? (7 << CAL_FRAC) / 2 : 0;

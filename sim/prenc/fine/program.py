@@ -49,7 +49,8 @@ The estimator, in the engine's words (docs/fine.md):
     change, so at most the step, where WINDOW >= 4 LATENCY = 1024 (P2 >= WINDOW / 2).
   - The first window after a start: S <- V1.
 - Overdue: the engine divides LEVEL (the quarter's true width and a quarter, and
-  twice EDGE_TOLERANCE) by the
+  four times EDGE_TOLERANCE: each of its two edges may be off by the print's
+  tolerance, of which EDGE_TOLERANCE is about 0.6) by the
   clocks since the last step, whenever it has nothing else to do. The disc has turned
   less than LEVEL since that step, so its mean speed is below the quotient: the speed
   is bounded by it (acceleration 0). Half as long again without a step is a stop: 0.
@@ -112,7 +113,8 @@ def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
     may be off the places the velocity takes them at (the nominal ones; with a table,
     the table's: then the sensors' noise). The windows are whole cycles (C_CYCLE), the
     test allows that much more error at each edge (C_2DELTA), and an overdue edge waits
-    for a quarter that much wider (C_LEVEL0). With a table too, the running mean weighs
+    for a quarter four times that much wider (C_LEVEL0: its two edges, each off by up to
+    the print's tolerance, about 1.6 EDGE_TOLERANCE). With a table too, the running mean weighs
     1/2^RUN_SHIFT_SETTLED after C_SETTLED windows without a trend of C_TREND; else
     C_TREND is 0 and every window is a trend."""
     if not 0 <= edge_tolerance <= EDGE_TOLERANCE_MAX:
@@ -120,7 +122,7 @@ def constants(window: int, cal: int, edge_tolerance: int = 0) -> dict[int, int]:
     edge = edge_delta(edge_tolerance)
     cycles = edge_tolerance > 0
     values = {"C_ZERO": 0, "C_WINDOW": window, "C_SHORT": window // 2,
-              "C_QUARTERS": (1 << CAL_FRAC) if cycles else QUARTERS, "C_LEVEL0": (LEVEL_0 + 2 * edge) << LEVEL_SHIFT,
+              "C_QUARTERS": (1 << CAL_FRAC) if cycles else QUARTERS, "C_LEVEL0": (LEVEL_0 + 4 * edge) << LEVEL_SHIFT,
               "C_2DELTA": 2 * DELTA[cal] + (2 * edge << (V_FRAC - CAL_FRAC)), "C_LATENCY": LATENCY,
               "C_OLD": OLD, "C_ONE": 1, "C_TWO": 2, "C_CYCLE": CYCLE if cycles else 0,
               "C_SETTLED": SETTLED, "C_TREND": TREND if (cal and cycles) else 0}

@@ -281,8 +281,8 @@ def test_a_held_speed_settles_to_the_mean_of_many_windows_through_noise():
 
 
 def test_a_stop_on_a_printed_disc_reads_zero_with_edge_tolerance():
-    # An overdue edge waits for a quarter 2 EDGE_TOLERANCE wider: the stop reads 0 within
-    # 1.5 (1.25 + 2 x 0.124) = 2.25 nominal edge periods, and nothing reads 0 before it.
+    # An overdue edge waits for a quarter 4 EDGE_TOLERANCE wider: the stop reads 0 within
+    # 1.5 (1.25 + 4 x 0.124) = 2.62 nominal edge periods, and nothing reads 0 before it.
     traj = Trajectory(fb.CLK_HZ, start=100.375).constant(fb.rpm(600), 6e-3)
     stopped = len(traj.theta) + fb.DECODER_DELAY
     theta = traj.rest(4e-3).theta
@@ -291,7 +291,7 @@ def test_a_stop_on_a_printed_disc_reads_zero_with_edge_tolerance():
     period = fb.CLK_HZ / (4 * fb.rpm(600))
     zero = np.flatnonzero(out["velocity"] == 0)
     zero = zero[zero > 3e-3 * fb.CLK_HZ][0]
-    assert 0 < zero - stopped <= 2.3 * period, ((zero - stopped) / period)
+    assert 0 < zero - stopped <= 2.65 * period, ((zero - stopped) / period)
     assert (out["velocity"][zero:] == 0).all() and out["velocity_valid"][zero:].all()
 
 
