@@ -26,7 +26,7 @@ extern "C" {
 #define PRENC_WB__VERSION__MINOR_bm 0xff00
 #define PRENC_WB__VERSION__MINOR_bp 8
 #define PRENC_WB__VERSION__MINOR_bw 8
-#define PRENC_WB__VERSION__MINOR_reset 0x15
+#define PRENC_WB__VERSION__MINOR_reset 0x16
 #define PRENC_WB__VERSION__MAJOR_bm 0xff0000
 #define PRENC_WB__VERSION__MAJOR_bp 16
 #define PRENC_WB__VERSION__MAJOR_bw 8

@@ -142,7 +142,7 @@ module prenc_wb #(
   localparam [4:0] A_CAL_DATA         = 5'h19;
 
   localparam [31:0] ID      = 32'h7072_6E63;  // "prnc"
-  localparam [31:0] VERSION = 32'h0000_1500;  // 0.21.0, the project's VERSION
+  localparam [31:0] VERSION = 32'h0000_1600;  // 0.22.0, the project's VERSION
 
   generate
     if (N < 2 || N > 24) begin : g_bad_n
