@@ -34,7 +34,7 @@ def test_the_docs_build_without_a_warning(site):
 
 @pytest.mark.parametrize("page,diagrams", [("interfaces/ssi.html", 1), ("biss-c.html", 1),
                                            ("host-protocol.html", 2), ("interfaces/strobe-timing.html", 1),
-                                           ("fine.html", 1), ("interfaces/as5047.html", 1)])
+                                           ("fine.html", 2), ("interfaces/as5047.html", 1)])
 def test_the_timing_diagrams_are_rendered_at_build_time(site, page, diagrams):
     html = (site / page).read_text()
     images = re.findall(r'<img[^>]+src="([^"]*wavedrom[^"]*\.svg)"', html)
