@@ -52,6 +52,16 @@ def _speed(run: EncoderRun) -> np.ndarray:
     return v
 
 
+def travelled(run: EncoderRun, edges: np.ndarray, slots: np.ndarray) -> np.ndarray:
+    """The clocks (fractional) at which the disc has travelled `slots` from each of
+    `edges` (later where positive, earlier where negative): a crossing moved along the
+    disc. Where the speed changes near an edge this is where the disc really is that far
+    from it, not the edge's own speed times the time (which at a step of speed would move
+    a crossing by the new speed's clocks into the old speed's travel)."""
+    path = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(run.theta)))])
+    return np.interp(path[edges] + slots, path, np.arange(len(path), dtype=np.float64))
+
+
 def move_edges(signal: np.ndarray, edges: np.ndarray, new: np.ndarray) -> np.ndarray:
     """The signal with its level changes at clocks `edges` moved to `new` (rounded, kept
     in order, one clock apart at least)."""
@@ -74,7 +84,8 @@ def move_edges(signal: np.ndarray, edges: np.ndarray, new: np.ndarray) -> np.nda
 
 @dataclass
 class CrossingJitter:
-    """Each crossing of `signals` moves by N(0, sigma) slots, independently on each pass."""
+    """Each crossing of `signals` moves by N(0, sigma) slots of the disc's travel,
+    independently on each pass."""
 
     sigma: float = 0.005
     signals: tuple[str, ...] = ("a", "b")
@@ -87,13 +98,11 @@ class CrossingJitter:
 
     def apply(self, run: EncoderRun) -> None:
         rng = np.random.default_rng(self.seed)
-        speed = _speed(run)
         for name in self.signals:
             sig = run.signals[name]
             edges = _edges(sig)
             shift_slots = rng.normal(0.0, self.sigma, len(edges))
-            shift = shift_slots / np.maximum(speed[edges], 1e-12)
-            run.signals[name] = move_edges(sig, edges, edges + shift)
+            run.signals[name] = move_edges(sig, edges, travelled(run, edges, shift_slots))
 
 
 @dataclass
@@ -180,10 +189,9 @@ class DutyDrift:
         return self.amplitude * np.sin(2 * np.pi * t / self.period_s + self.phase)
 
     def apply(self, run: EncoderRun) -> None:
-        speed = _speed(run)
         for name in self.signals:
             sig = run.signals[name]
             edges = _edges(sig)
-            half = self.drift(edges, run.clk_hz) / 2 / np.maximum(speed[edges], 1e-12)
+            half = self.drift(edges, run.clk_hz) / 2          # slots
             rising = sig[edges] == 1
-            run.signals[name] = move_edges(sig, edges, edges + np.where(rising, -half, half))
+            run.signals[name] = move_edges(sig, edges, travelled(run, edges, np.where(rising, -half, half)))

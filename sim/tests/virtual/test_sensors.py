@@ -42,6 +42,28 @@ def test_jitter_moves_each_crossing_by_its_gaussian_in_slots():
     np.testing.assert_array_equal(again.a, noisy.a)
 
 
+def test_jitter_moves_a_crossing_by_slots_of_travel_where_the_speed_steps():
+    # Steps of speed at once, fast (1,000 clocks a slot) and slow (20,000), 0.37 slot each:
+    # a crossing's jitter is in slots of the disc's travel, so no crossing moves further
+    # along the disc than about its Gaussian allows (5 sigma), whichever side of a step it
+    # falls on. (Taken as the edge's speed times the time, a crossing just after a step
+    # moved by the slow speed's clocks into the fast travel: 0.4 slot for 0.02.)
+    parts, start = [], 3.1
+    for k in range(200):
+        clocks_per_slot = 1000.0 if k % 2 == 0 else 20000.0
+        n = int(0.37 * clocks_per_slot)
+        parts.append(start + np.arange(n) / clocks_per_slot)
+        start = parts[-1][-1] + 1 / clocks_per_slot
+    theta = np.concatenate(parts)
+    sigma = 0.02
+    clean, noisy = run_with(theta), run_with(theta, CrossingJitter(sigma=sigma, seed=5))
+    for s in ("a", "b"):
+        e0, e1 = edges(clean.signals[s]), edges(noisy.signals[s])
+        assert len(e0) == len(e1) > 100
+        moved = np.abs(theta[e1] - theta[e0])
+        assert moved.max() < 5 * sigma, moved.max()
+
+
 def test_chatter_adds_its_toggles_at_a_crawl_and_none_at_speed():
     slow_clock = 2e6                                     # a slower clock keeps the arrays short
     crawl = steady(slow_clock / 2.0, 4_000_000, start=3.05)   # 2 slots a second: 8 crossings of A
