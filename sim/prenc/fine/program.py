@@ -56,8 +56,9 @@ The estimator, in the engine's words (docs/fine.md):
   is bounded by it (acceleration 0). Half as long again without a step is a stop: 0.
   The first bound comes 1.25 edge periods after the last step, the stop 1.9 periods
   after it: a disc that stops reads 0 within two of its edge periods where these are
-  long against the engine's own pace (a division and the updates: about 150 clocks; at
-  10,000 rpm, N = 10, 30 MHz, 3.3 periods), and one whose speed falls to half or less
+  long against the engine's own pace (a division and the updates between its checks:
+  a dead stop reads 0 within two edge periods and 200 clocks), and one whose speed
+  falls to half or less
   at once reads 0 until the first window after its next edge (the speed is below the
   bound, 0.67 of the last, all the while). A due update ends the bound's division
   (DIV abortable); its 35 steps on operands that come LEVEL_SHIFT bits up fit between
