@@ -8,7 +8,7 @@
 #                ARGS=cal: section 10 alone)
 #   make lint    verilator --lint-only -Wall on every top's file list
 #   make rom     the default conversion ROM into build/rom/
-#   make synth BOARD=icebreaker|ulx3s [BITS=10] [BAUD=115200] [CAL=disc.cal|1] [SEEDS=1,2,3,4]
+#   make synth BOARD=icebreaker|ulx3s|icestick [BITS=10] [BAUD=115200] [CAL=disc.cal|1] [SEEDS=1,2,3,4]
 #                bitstream and report (cells, FFs, block RAMs, Fmax) in build/synth/;
 #                CAL: the calibration table built in (a file from prenc calibrate), or
 #                empty (1), for the boards that have one (docs/calibration.md); SEEDS:

@@ -3,7 +3,7 @@
 //
 //   25 MHz (G2) -> EHXPLLL -> 50 MHz system clock (x2; an ECP5 PLL cannot make
 //   48 MHz from 25 MHz with a legal PFD). Baud rates: 115200 (434 clocks per bit),
-//   1 and 2 Mbaud exact; 3 Mbaud is 17 clocks per bit, 2 % fast.
+//   1 and 2 Mbaud exact; 3 Mbaud is 17 clocks per bit, 2 % slow (2.94 Mbaud).
 //   power-on reset (prenc_power_on_reset): until the PLL locks, then 32 clocks; FIRE1 too
 //   J1 header: GP0 head1, GN0 head2, GP1 sync A, GN1 sync B            (inputs, 3.3 V)
 //              (the top's ports are inputs and outputs only, GN2 and GN4 as their own
